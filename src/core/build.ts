@@ -1,0 +1,543 @@
+/**
+ * Building a halfedge mesh from a polygon soup, in time linear in the number of face corners.
+ *
+ * Each face corner `c` (vertex `corners[c]` of a face) becomes the halfedge from that vertex to the
+ * next one of the face. The work is to find, for each such halfedge, its twin: the corner of a
+ * neighbouring face that runs along the same edge the other way. The phases:
+ *
+ *   1. keep the faces a halfedge mesh can hold (drop out-of-range and degenerate ones);
+ *   2. pair the corners that share an edge (a counting sort by the edge's lower vertex, then a
+ *      stamp per upper vertex: no search, no hash map, no sort by comparison);
+ *   3. when some pair runs the same way, flip faces so neighbours agree (per component, keeping the
+ *      majority's orientation); a pair that still disagrees is a non-orientable seam and is cut;
+ *   4. edges with three or more faces keep one pair and detach the rest;
+ *   5. number the halfedges (twin pairs in adjacent slots, in order of first appearance) and link
+ *      each face's loop;
+ *   6. walk the fan of faces around each vertex; a vertex with several fans is duplicated, one copy
+ *      per fan, as OpenMesh's importer does;
+ *   7. link the boundary halfedges into loops around each hole.
+ *
+ * Every repair is reported (see `report.ts`) with the ids involved.
+ */
+import { attributeTypeOf } from './attributes.js';
+import { InvalidInputError } from './errors.js';
+import { HalfedgeMesh } from './mesh.js';
+import { type BuildReport, ReportBuilder } from './report.js';
+import { checkSoupShape, type PolygonSoup } from './soup.js';
+
+export interface BuildOptions {
+  /** Called between phases with the fraction done (0…1). */
+  onProgress?: (fraction: number) => void;
+}
+
+export interface BuildResult {
+  mesh: HalfedgeMesh;
+  report: BuildReport;
+  /** Mesh face → soup face; `null` when every face was kept, so the ids are the same. */
+  inputFaceOf: Int32Array | null;
+}
+
+/**
+ * Builds a halfedge mesh from a polygon soup, repairing what a halfedge mesh cannot hold and
+ * reporting each repair. Vertex ids are kept (duplicates of pinched vertices are appended);
+ * face ids are kept unless faces had to be dropped (see `inputFaceOf`).
+ * @example
+ *   const { mesh, report } = buildMesh(soupFromArrays(positions, [[0, 1, 2], [0, 2, 3]]));
+ * @throws InvalidInputError when the soup's arrays are not shaped as `PolygonSoup` says.
+ */
+export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildResult {
+  checkSoupShape(soup);
+  const progress = options.onProgress ?? (() => {});
+  const nInputVertices = soup.positions.length / 3;
+  const nInputFaces = soup.faceStarts.length - 1;
+  const report = new ReportBuilder();
+
+  // 1. keep the faces a halfedge mesh can hold
+  const kept = keepValidFaces(soup, report);
+  const { corners, starts } = kept;
+  progress(0.2);
+
+  // 2. pair the corners that share an edge
+  let pairing = pairCorners(corners, starts, nInputVertices);
+  progress(0.4);
+
+  // 3. orient: flip faces until every pair runs opposite ways, or cut where it cannot
+  if (pairing.sameDirectionPairs > 0) {
+    orientFaces(kept, pairing.twin, report);
+    pairing = pairCorners(corners, starts, nInputVertices);
+    cutSeams(kept, pairing.twin, report);
+  }
+
+  // 4. edges with more than two faces: keep one pair, detach the others
+  for (const group of pairing.crowded) keepOnePair(group, kept, pairing.twin, report);
+  progress(0.5);
+
+  // 5. number the halfedges and link each face loop
+  const { mesh, halfedgeOf } = linkFaces(kept, pairing.twin, nInputVertices);
+  copyAttributes(soup, kept, mesh, halfedgeOf);
+  progress(0.7);
+
+  // 6. one fan per vertex
+  splitFans(mesh, report);
+  progress(0.9);
+
+  // 7. link the boundary loops
+  linkBoundaries(mesh);
+  reportVertices(mesh, nInputVertices, report);
+  progress(1);
+
+  return {
+    mesh,
+    report: report.finish(nInputVertices, nInputFaces),
+    inputFaceOf: kept.faceCount === nInputFaces ? null : kept.inputFace.slice(0, kept.faceCount),
+  };
+}
+
+/** The faces that survive phase 1, as corner lists (CSR like the soup). */
+interface KeptFaces {
+  corners: Int32Array;
+  starts: Int32Array;
+  faceCount: number;
+  /** Kept face → soup face. */
+  inputFace: Int32Array;
+  /** Kept corner → soup corner (for corner attributes). */
+  cornerSource: Int32Array;
+}
+
+function keepValidFaces(soup: PolygonSoup, report: ReportBuilder): KeptFaces {
+  const { faceStarts, faceIndices } = soup;
+  const nV = soup.positions.length / 3;
+  const nF = faceStarts.length - 1;
+  const corners = new Int32Array(faceIndices.length);
+  const cornerSource = new Int32Array(faceIndices.length);
+  const starts = new Int32Array(nF + 1);
+  const inputFace = new Int32Array(nF);
+  let stamp: Int32Array | null = null; // last face that used each vertex (faces of 4+ corners)
+  let nc = 0;
+  let nk = 0;
+
+  for (let f = 0; f < nF; f++) {
+    const first = nc;
+    const end = faceStarts[f + 1];
+    let outOfRange = -1;
+    let collapsed = false;
+    for (let i = faceStarts[f]; i < end; i++) {
+      const v = faceIndices[i];
+      if (!(v >= 0 && v < nV)) outOfRange = v;
+      if (nc > first && corners[nc - 1] === v) {
+        collapsed = true;
+        continue;
+      }
+      cornerSource[nc] = i;
+      corners[nc++] = v;
+    }
+    while (nc - first > 1 && corners[nc - 1] === corners[first]) {
+      nc--;
+      collapsed = true;
+    }
+    const listed = Array.from(faceIndices.subarray(faceStarts[f], end));
+    if (outOfRange !== -1) {
+      nc = first;
+      report.add('out-of-range-index', {
+        message: `face ${f} uses vertex ${outOfRange}, but the vertices are numbered 0..${nV - 1}`,
+        inputFaces: [f],
+      });
+      continue;
+    }
+    const degree = nc - first;
+    let repeated = -1;
+    if (degree > 3) {
+      stamp ??= new Int32Array(nV).fill(-1);
+      for (let c = first; c < nc; c++) {
+        const v = corners[c];
+        if (stamp[v] === f) repeated = v;
+        stamp[v] = f;
+      }
+    }
+    if (degree < 3 || repeated !== -1) {
+      nc = first;
+      report.add('degenerate-face', {
+        message:
+          degree < 3
+            ? `face ${f} (${listed.join(', ')}) has fewer than 3 distinct vertices`
+            : `face ${f} (${listed.join(', ')}) passes through vertex ${repeated} twice`,
+        inputFaces: [f],
+        inputVertices: [...new Set(listed)],
+      });
+      continue;
+    }
+    if (collapsed) {
+      report.add('collapsed-repeated-vertex', {
+        message: `face ${f} (${listed.join(', ')}) kept as (${Array.from(corners.subarray(first, nc)).join(', ')})`,
+        inputFaces: [f],
+        faces: [nk],
+      });
+    }
+    inputFace[nk++] = f;
+    starts[nk] = nc;
+  }
+  return { corners, starts, faceCount: nk, inputFace, cornerSource };
+}
+
+interface Pairing {
+  /** The corner across the same edge, or -1. */
+  twin: Int32Array;
+  /** Pairs whose two corners run the same way (the faces disagree on orientation). */
+  sameDirectionPairs: number;
+  /** Corners of each edge that has three or more, in corner order. */
+  crowded: number[][];
+}
+
+function pairCorners(corners: Int32Array, starts: Int32Array, nV: number): Pairing {
+  const nF = starts.length - 1;
+  const nC = starts[nF];
+  // bucket the corners by the lower vertex of their edge (counting sort)
+  const bucketStart = new Int32Array(nV + 1);
+  for (let f = 0; f < nF; f++) {
+    const s = starts[f];
+    const e = starts[f + 1];
+    for (let c = s; c < e; c++) {
+      const a = corners[c];
+      const b = corners[c + 1 < e ? c + 1 : s];
+      bucketStart[(a < b ? a : b) + 1]++;
+    }
+  }
+  for (let v = 0; v < nV; v++) bucketStart[v + 1] += bucketStart[v];
+  const fill = bucketStart.slice(0, nV);
+  const order = new Int32Array(nC);
+  const upper = new Int32Array(nC);
+  for (let f = 0; f < nF; f++) {
+    const s = starts[f];
+    const e = starts[f + 1];
+    for (let c = s; c < e; c++) {
+      const a = corners[c];
+      const b = corners[c + 1 < e ? c + 1 : s];
+      const slot = fill[a < b ? a : b]++;
+      order[slot] = c;
+      upper[slot] = a < b ? b : a;
+    }
+  }
+
+  // within a bucket, corners with the same upper vertex share an edge: stamp the upper vertex
+  // with the bucket it was last seen in and the first corner seen there
+  const twin = new Int32Array(nC).fill(-1);
+  const stampBucket = new Int32Array(nV).fill(-1);
+  const firstCorner = new Int32Array(nV);
+  const crowded: number[][] = [];
+  const crowdedByFirst = new Map<number, number[]>();
+  let sameDirectionPairs = 0;
+  for (let lo = 0; lo < nV; lo++) {
+    const end = bucketStart[lo + 1];
+    for (let slot = bucketStart[lo]; slot < end; slot++) {
+      const c = order[slot];
+      const hi = upper[slot];
+      if (stampBucket[hi] !== lo) {
+        stampBucket[hi] = lo;
+        firstCorner[hi] = c;
+        continue;
+      }
+      const first = firstCorner[hi];
+      const partner = twin[first];
+      if (partner === -1) {
+        twin[first] = c;
+        twin[c] = first;
+        if (corners[first] === corners[c]) sameDirectionPairs++;
+        continue;
+      }
+      // a third (or later) corner on this edge; -2 marks the first corner of a crowded edge
+      let group = crowdedByFirst.get(first);
+      if (!group) {
+        group = [first, partner];
+        crowdedByFirst.set(first, group);
+        crowded.push(group);
+        twin[first] = -2;
+        twin[partner] = -1;
+        if (corners[first] === corners[partner]) sameDirectionPairs--;
+      }
+      group.push(c);
+    }
+  }
+  for (const group of crowded) twin[group[0]] = -1;
+  return { twin, sameDirectionPairs, crowded };
+}
+
+/** Face of each corner. */
+function cornerFaces(starts: Int32Array): Int32Array {
+  const nF = starts.length - 1;
+  const faceOf = new Int32Array(starts[nF]);
+  for (let f = 0; f < nF; f++) faceOf.fill(f, starts[f], starts[f + 1]);
+  return faceOf;
+}
+
+/**
+ * Chooses, by breadth-first search over faces joined by paired edges, which faces to flip so
+ * that neighbours agree; in each component the orientation most faces already have wins.
+ * An edge whose faces still disagree when the search meets it again is a non-orientable seam.
+ */
+function orientFaces(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
+  const { corners, starts, faceCount: nF, inputFace } = kept;
+  const faceOf = cornerFaces(starts);
+  const flip = new Uint8Array(nF);
+  const visited = new Uint8Array(nF);
+  const queue = new Int32Array(nF);
+  let tail = 0;
+  for (let seed = 0; seed < nF; seed++) {
+    if (visited[seed]) continue;
+    const head0 = tail;
+    visited[seed] = 1;
+    queue[tail++] = seed;
+    let flipped = 0;
+    for (let head = head0; head < tail; head++) {
+      const f = queue[head];
+      for (let c = starts[f]; c < starts[f + 1]; c++) {
+        const d = twin[c];
+        if (d < 0) continue;
+        const g = faceOf[d];
+        const want = flip[f] ^ (corners[c] === corners[d] ? 1 : 0);
+        if (!visited[g]) {
+          visited[g] = 1;
+          flip[g] = want;
+          flipped += want;
+          queue[tail++] = g;
+        }
+      }
+    }
+    if (2 * flipped > tail - head0) {
+      for (let i = head0; i < tail; i++) flip[queue[i]] ^= 1;
+    }
+  }
+  for (let f = 0; f < nF; f++) {
+    if (!flip[f]) continue;
+    // reverse all but the first corner, so the face still starts at the same vertex
+    corners.subarray(starts[f] + 1, starts[f + 1]).reverse();
+    kept.cornerSource.subarray(starts[f] + 1, starts[f + 1]).reverse();
+    report.add('reoriented-face', {
+      message: `face ${inputFace[f]} flipped`,
+      inputFaces: [inputFace[f]],
+      faces: [f],
+    });
+  }
+}
+
+/**
+ * After orienting, a pair that still runs the same way is a seam of a non-orientable surface:
+ * cut it, so both corners get a boundary twin.
+ */
+function cutSeams(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
+  const { corners, starts, inputFace } = kept;
+  for (let c = 0; c < twin.length; c++) {
+    const d = twin[c];
+    if (d <= c || corners[c] !== corners[d]) continue;
+    twin[c] = -1;
+    twin[d] = -1;
+    report.orientable = false;
+    const faces = [faceOfCorner(starts, c), faceOfCorner(starts, d)];
+    const [a, b] = cornerEdge(kept, c);
+    report.add('non-orientable', {
+      message: `edge ${a}–${b} between faces ${inputFace[faces[0]]} and ${inputFace[faces[1]]} was cut open`,
+      inputVertices: [a, b],
+      inputFaces: faces.map((f) => inputFace[f]),
+      faces,
+    });
+  }
+}
+
+/** Of the corners along one edge, pairs the first with the first that runs the other way. */
+function keepOnePair(group: number[], kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
+  const { corners, starts, inputFace } = kept;
+  const first = group[0];
+  const partner = group.find((c) => corners[c] !== corners[first]);
+  if (partner !== undefined) {
+    twin[first] = partner;
+    twin[partner] = first;
+  }
+  const faces = group.map((c) => faceOfCorner(starts, c));
+  const joined = partner === undefined ? [] : [faceOfCorner(starts, first), faceOfCorner(starts, partner)];
+  const detached = faces.filter((f) => !joined.includes(f));
+  const [a, b] = cornerEdge(kept, first);
+  const names = (list: number[]) => list.map((f) => inputFace[f]).join(', ');
+  report.add('non-manifold-edge', {
+    message:
+      `edge ${a}–${b} is shared by ${faces.length} faces (${names(faces)}): ` +
+      (joined.length ? `${names(joined)} stay joined, ` : '') +
+      `${names(detached)} detached`,
+    inputVertices: [a, b],
+    inputFaces: faces.map((f) => inputFace[f]),
+    faces,
+  });
+}
+
+function faceOfCorner(starts: Int32Array, c: number): number {
+  // the last face whose start is at or before c (binary search: only rare repairs call this)
+  let lo = 0;
+  let hi = starts.length - 1;
+  while (lo < hi) {
+    const mid = (lo + hi + 1) >>> 1;
+    if (starts[mid] <= c) lo = mid;
+    else hi = mid - 1;
+  }
+  return lo;
+}
+
+/** The two vertices of the edge that corner `c` starts. */
+function cornerEdge(kept: KeptFaces, c: number): [number, number] {
+  const f = faceOfCorner(kept.starts, c);
+  const next = c + 1 < kept.starts[f + 1] ? c + 1 : kept.starts[f];
+  return [kept.corners[c], kept.corners[next]];
+}
+
+/**
+ * Numbers the halfedges: each corner's halfedge and its twin's take the two slots of one edge,
+ * in order of first appearance, so face 0's halfedges are h0, h2, h4, … Then links each face loop.
+ * Returns the mesh (boundary halfedges not yet linked) and each corner's halfedge.
+ */
+function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number): { mesh: HalfedgeMesh; halfedgeOf: Int32Array } {
+  const { corners, starts, faceCount: nF } = kept;
+  const nC = starts[nF];
+  const halfedgeOf = new Int32Array(nC).fill(-1);
+  let nE = 0;
+  for (let c = 0; c < nC; c++) {
+    if (halfedgeOf[c] !== -1) continue;
+    const h = 2 * nE++;
+    halfedgeOf[c] = h;
+    const d = twin[c];
+    if (d >= 0) halfedgeOf[d] = h + 1;
+  }
+  if (nE > 0x3fffffff) throw new InvalidInputError(`${nE} edges are more than one mesh can hold`);
+
+  const mesh = new HalfedgeMesh({ vertices: nV, edges: nE, faces: nF });
+  mesh.vertexSlots = nV;
+  mesh.edgeSlots = nE;
+  mesh.faceSlots = nF;
+  const { heNext, hePrev, heVertex, heFace, fHalfedge } = mesh;
+  heFace.fill(-1);
+  for (let f = 0; f < nF; f++) {
+    const s = starts[f];
+    const e = starts[f + 1];
+    let prev = halfedgeOf[e - 1];
+    for (let c = s; c < e; c++) {
+      const h = halfedgeOf[c];
+      heVertex[h] = corners[c];
+      heFace[h] = f;
+      hePrev[h] = prev;
+      heNext[prev] = h;
+      prev = h;
+    }
+    fHalfedge[f] = halfedgeOf[s];
+  }
+  return { mesh, halfedgeOf };
+}
+
+function copyAttributes(soup: PolygonSoup, kept: KeptFaces, mesh: HalfedgeMesh, halfedgeOf: Int32Array): void {
+  mesh.positions.set(soup.positions);
+  for (const { name, itemSize, data, interpolation } of soup.vertexAttributes ?? []) {
+    mesh.vertexAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data.set(data);
+  }
+  for (const { name, itemSize, data, interpolation } of soup.faceAttributes ?? []) {
+    const target = mesh.faceAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data;
+    for (let f = 0; f < kept.faceCount; f++) {
+      const src = kept.inputFace[f];
+      target.set(data.subarray(src * itemSize, (src + 1) * itemSize), f * itemSize);
+    }
+  }
+  for (const { name, itemSize, data, interpolation } of soup.cornerAttributes ?? []) {
+    const target = mesh.halfedgeAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data;
+    for (let c = 0; c < halfedgeOf.length; c++) {
+      const src = kept.cornerSource[c];
+      target.set(data.subarray(src * itemSize, (src + 1) * itemSize), halfedgeOf[c] * itemSize);
+    }
+  }
+}
+
+/**
+ * Walks the fan of faces around each vertex. The first fan found keeps the vertex; every further
+ * fan of the same vertex gets a copy (same position and attributes), so each vertex ends up with
+ * exactly one fan. Sets each vertex's halfedge (its outgoing boundary halfedge on an open fan) and
+ * the origin of each boundary halfedge.
+ */
+function splitFans(mesh: HalfedgeMesh, report: ReportBuilder): void {
+  const { heNext, hePrev, heVertex, heFace } = mesh;
+  const nH = mesh.halfedgeSlots;
+  mesh.vHalfedge.fill(-1);
+  const visited = new Uint8Array(nH);
+  const copies = new Map<number, number[]>();
+  for (let h = 0; h < nH; h++) {
+    if (heFace[h] === -1 || visited[h]) continue;
+    const v = heVertex[h];
+    // rotate counter-clockwise (twin of prev) to the first halfedge of an open fan, or all the way round
+    let first = h;
+    let open = false;
+    for (let steps = 0; ; steps++) {
+      const t = hePrev[first] ^ 1;
+      if (heFace[t] === -1) {
+        open = true;
+        break;
+      }
+      if (t === h) break;
+      if (steps > nH) throw new Error(`buildMesh: the fan around vertex ${v} does not close`);
+      first = t;
+    }
+    let w = v;
+    if (mesh.vHalfedge[v] !== -1) {
+      w = mesh.addVertex();
+      mesh.vertexAttributes.copy(w, v);
+      let list = copies.get(v);
+      if (!list) copies.set(v, (list = []));
+      list.push(w);
+    }
+    // rotate clockwise (next of twin) across the whole fan, claiming its halfedges for w
+    let x = first;
+    do {
+      visited[x] = 1;
+      heVertex[x] = w;
+      const t = x ^ 1;
+      if (heFace[t] === -1) break;
+      x = heNext[t];
+    } while (x !== first);
+    if (open) {
+      const boundaryOut = hePrev[first] ^ 1;
+      heVertex[boundaryOut] = w;
+      mesh.vHalfedge[w] = boundaryOut;
+    } else {
+      mesh.vHalfedge[w] = first;
+    }
+  }
+  for (const [v, list] of copies) {
+    report.add('non-manifold-vertex', {
+      message: `vertex ${v} joined ${list.length + 1} fans of faces: copies ${list.join(', ')} added`,
+      inputVertices: [v],
+      vertices: [v, ...list],
+    });
+  }
+}
+
+/**
+ * Each boundary halfedge b runs opposite a face corner c; the boundary halfedge after b leaves the
+ * vertex c starts from, and that vertex's halfedge is exactly its outgoing boundary halfedge.
+ */
+function linkBoundaries(mesh: HalfedgeMesh): void {
+  const { heNext, hePrev, heVertex, heFace, vHalfedge } = mesh;
+  const nH = mesh.halfedgeSlots;
+  for (let b = 0; b < nH; b++) {
+    if (heFace[b] !== -1) continue;
+    const after = vHalfedge[heVertex[b ^ 1]];
+    heNext[b] = after;
+    hePrev[after] = b;
+  }
+}
+
+function reportVertices(mesh: HalfedgeMesh, nInputVertices: number, report: ReportBuilder): void {
+  const { vHalfedge, positions } = mesh;
+  for (let v = 0; v < nInputVertices; v++) {
+    if (vHalfedge[v] === -1) {
+      report.add('isolated-vertex', { message: `vertex ${v} is in no face`, inputVertices: [v], vertices: [v] });
+    }
+    if (!Number.isFinite(positions[3 * v] + positions[3 * v + 1] + positions[3 * v + 2])) {
+      report.add('non-finite-position', {
+        message: `vertex ${v} is at (${positions[3 * v]}, ${positions[3 * v + 1]}, ${positions[3 * v + 2]})`,
+        inputVertices: [v],
+        vertices: [v],
+      });
+    }
+  }
+}

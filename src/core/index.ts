@@ -1,0 +1,15 @@
+/**
+ * The halfedge core: pure TypeScript (no DOM, no three.js, no Node built-ins), so the same code
+ * runs in a Web Worker, in Node and in a plain page.
+ */
+export * from './attributes.js';
+export * from './build.js';
+export * from './circulators.js';
+export * from './errors.js';
+export * from './geometry.js';
+export * from './mesh.js';
+export * from './report.js';
+export * from './soup.js';
+export * from './stats.js';
+export * from './validate.js';
+export * from './shapes.js';

@@ -1,0 +1,442 @@
+/**
+ * The halfedge mesh: every edge is two opposite *halfedges*, and every halfedge knows
+ * the halfedge after it (`next`) and before it (`prev`) around the face on its left, the vertex it
+ * starts from (`origin`) and that face (`face`).
+ *
+ * ```
+ *            target = origin(next(h))
+ *                 ▲ │
+ *        next(h) ╱  │
+ *               ╱ h │ twin(h)
+ *    face(h)   ╱    │
+ *             ╱     ▼
+ *       prev(h)  origin(h)
+ * ```
+ *
+ * Storage is index-based and struct-of-arrays: elements are integers, relations are `Int32Array`s
+ * named owner + relation (`heNext`, `heVertex`, `vHalfedge`, `fHalfedge`), and `-1` is the one
+ * "none". Indices carry what can be derived:
+ *   - the two halfedges of edge `e` are `2e` and `2e + 1`, so `twin(h) = h ^ 1` and `edge(h) = h >> 1`;
+ *   - `target(h) = origin(next(h))`.
+ *
+ * Conventions (written down once; `validate()` checks every one):
+ *   - faces lie on the **left** of their halfedges, which run **counter-clockwise** seen from outside;
+ *   - a **boundary halfedge** has `face = -1` but still links `next`/`prev` around its hole, so
+ *     every halfedge lies on exactly one closed cycle;
+ *   - a boundary vertex's halfedge (`vHalfedge`) is its outgoing boundary halfedge, so "is this
+ *     vertex on the boundary?" is one lookup;
+ *   - an isolated vertex has `vHalfedge = -1`;
+ *   - every vertex has one fan of faces (the mesh is manifold): the builder duplicates pinched
+ *     vertices to make it so.
+ *
+ * Deleted elements stay in their slots, flagged in `vDeleted`, `eDeleted` or `fDeleted`, until
+ * `compact()` renumbers the live ones. Algorithms may loop over `0 … slots - 1` without checking
+ * the flags when `isCompact` is true (always, right after a build).
+ */
+import { AttributeSet } from './attributes.js';
+import { InvalidInputError } from './errors.js';
+
+export interface MeshCapacity {
+  vertices: number;
+  edges: number;
+  faces: number;
+}
+
+/** Old id → new id (-1 for a deleted element), as returned by `compact()`. */
+export interface CompactionMaps {
+  vertices: Int32Array;
+  edges: Int32Array;
+  faces: Int32Array;
+}
+
+export class HalfedgeMesh {
+  /** Next halfedge around the face (or hole) on the left. */
+  heNext: Int32Array;
+  /** Previous halfedge around the face (or hole) on the left. */
+  hePrev: Int32Array;
+  /** The vertex a halfedge starts from. */
+  heVertex: Int32Array;
+  /** The face on the left, or -1 for a boundary halfedge. */
+  heFace: Int32Array;
+  /** One outgoing halfedge per vertex: the boundary one on the boundary, -1 when isolated. */
+  vHalfedge: Int32Array;
+  /** One halfedge of each face. */
+  fHalfedge: Int32Array;
+  /** 1 where the slot is deleted. */
+  vDeleted: Uint8Array;
+  eDeleted: Uint8Array;
+  fDeleted: Uint8Array;
+
+  /** Vertex, edge and face slots in use, deleted ones included. Halfedge slots are `2 × edgeSlots`. */
+  vertexSlots = 0;
+  edgeSlots = 0;
+  faceSlots = 0;
+
+  private deletedVertices = 0;
+  private deletedEdges = 0;
+  private deletedFaces = 0;
+
+  readonly vertexAttributes: AttributeSet;
+  readonly halfedgeAttributes: AttributeSet;
+  readonly edgeAttributes: AttributeSet;
+  readonly faceAttributes: AttributeSet;
+
+  constructor(capacity: MeshCapacity = { vertices: 0, edges: 0, faces: 0 }) {
+    const { vertices, edges, faces } = capacity;
+    this.heNext = new Int32Array(2 * edges);
+    this.hePrev = new Int32Array(2 * edges);
+    this.heVertex = new Int32Array(2 * edges);
+    this.heFace = new Int32Array(2 * edges);
+    this.vHalfedge = new Int32Array(vertices);
+    this.fHalfedge = new Int32Array(faces);
+    this.vDeleted = new Uint8Array(vertices);
+    this.eDeleted = new Uint8Array(edges);
+    this.fDeleted = new Uint8Array(faces);
+    this.vertexAttributes = new AttributeSet(vertices);
+    this.halfedgeAttributes = new AttributeSet(2 * edges);
+    this.edgeAttributes = new AttributeSet(edges);
+    this.faceAttributes = new AttributeSet(faces);
+    this.vertexAttributes.add('position', 'float64', 3);
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Navigation (O(1) each)
+
+  next(h: number): number {
+    return this.heNext[h];
+  }
+  prev(h: number): number {
+    return this.hePrev[h];
+  }
+  twin(h: number): number {
+    return h ^ 1;
+  }
+  edge(h: number): number {
+    return h >> 1;
+  }
+  origin(h: number): number {
+    return this.heVertex[h];
+  }
+  target(h: number): number {
+    return this.heVertex[this.heNext[h]];
+  }
+  face(h: number): number {
+    return this.heFace[h];
+  }
+  /** An outgoing halfedge of `v` (its boundary one if `v` is on the boundary), or -1 if isolated. */
+  vertexHalfedge(v: number): number {
+    return this.vHalfedge[v];
+  }
+  faceHalfedge(f: number): number {
+    return this.fHalfedge[f];
+  }
+  edgeHalfedge(e: number): number {
+    return 2 * e;
+  }
+
+  isBoundaryHalfedge(h: number): boolean {
+    return this.heFace[h] === -1;
+  }
+  isBoundaryEdge(e: number): boolean {
+    return this.heFace[2 * e] === -1 || this.heFace[2 * e + 1] === -1;
+  }
+  isBoundaryVertex(v: number): boolean {
+    const h = this.vHalfedge[v];
+    return h >= 0 && this.heFace[h] === -1;
+  }
+  isIsolatedVertex(v: number): boolean {
+    return this.vHalfedge[v] === -1;
+  }
+  /** True when the face touches a hole along one of its edges. */
+  isBoundaryFace(f: number): boolean {
+    const start = this.fHalfedge[f];
+    let h = start;
+    do {
+      if (this.heFace[h ^ 1] === -1) return true;
+      h = this.heNext[h];
+    } while (h !== start);
+    return false;
+  }
+
+  /** Number of sides of face `f` (or of the hole that `h` runs around, with `loopLength`). */
+  faceDegree(f: number): number {
+    return this.loopLength(this.fHalfedge[f]);
+  }
+  /** Number of halfedges on the `next` cycle through `h`. */
+  loopLength(h: number): number {
+    let n = 0;
+    let g = h;
+    do {
+      n++;
+      g = this.heNext[g];
+    } while (g !== h);
+    return n;
+  }
+  /** Number of edges at `v` (0 for an isolated vertex). */
+  vertexDegree(v: number): number {
+    const start = this.vHalfedge[v];
+    if (start < 0) return 0;
+    let n = 0;
+    let h = start;
+    do {
+      n++;
+      h = this.hePrev[h] ^ 1;
+    } while (h !== start);
+    return n;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Counts and liveness
+
+  get positions(): Float64Array {
+    return this.vertexAttributes.get('position')!.data as Float64Array;
+  }
+  get halfedgeSlots(): number {
+    return 2 * this.edgeSlots;
+  }
+  get nVertices(): number {
+    return this.vertexSlots - this.deletedVertices;
+  }
+  get nEdges(): number {
+    return this.edgeSlots - this.deletedEdges;
+  }
+  get nHalfedges(): number {
+    return 2 * this.nEdges;
+  }
+  get nFaces(): number {
+    return this.faceSlots - this.deletedFaces;
+  }
+  /** True when no slot is deleted, so `0 … slots - 1` are all live elements. */
+  get isCompact(): boolean {
+    return this.deletedVertices === 0 && this.deletedEdges === 0 && this.deletedFaces === 0;
+  }
+
+  isVertexDeleted(v: number): boolean {
+    return this.vDeleted[v] === 1;
+  }
+  isEdgeDeleted(e: number): boolean {
+    return this.eDeleted[e] === 1;
+  }
+  isHalfedgeDeleted(h: number): boolean {
+    return this.eDeleted[h >> 1] === 1;
+  }
+  isFaceDeleted(f: number): boolean {
+    return this.fDeleted[f] === 1;
+  }
+
+  *vertices(): Generator<number> {
+    for (let v = 0; v < this.vertexSlots; v++) if (this.vDeleted[v] === 0) yield v;
+  }
+  *edges(): Generator<number> {
+    for (let e = 0; e < this.edgeSlots; e++) if (this.eDeleted[e] === 0) yield e;
+  }
+  *halfedges(): Generator<number> {
+    for (let h = 0; h < 2 * this.edgeSlots; h++) if (this.eDeleted[h >> 1] === 0) yield h;
+  }
+  *faces(): Generator<number> {
+    for (let f = 0; f < this.faceSlots; f++) if (this.fDeleted[f] === 0) yield f;
+  }
+
+  /** Position of `v` as `[x, y, z]` (written into `out` when given). */
+  position(v: number, out: number[] = [0, 0, 0]): number[] {
+    const p = this.positions;
+    out[0] = p[3 * v];
+    out[1] = p[3 * v + 1];
+    out[2] = p[3 * v + 2];
+    return out;
+  }
+  setPosition(v: number, x: number, y: number, z: number): void {
+    const p = this.positions;
+    p[3 * v] = x;
+    p[3 * v + 1] = y;
+    p[3 * v + 2] = z;
+  }
+
+  // ---------------------------------------------------------------------------------------------
+  // Growth. New elements come with every relation -1: the caller wires them, then `validate()`.
+
+  /** Makes room for at least this many slots of each kind, without changing any element. */
+  reserve(capacity: Partial<MeshCapacity>): void {
+    const { vertices = 0, edges = 0, faces = 0 } = capacity;
+    if (vertices > this.vHalfedge.length) {
+      this.vHalfedge = grow(this.vHalfedge, vertices, this.vertexSlots);
+      this.vDeleted = grow(this.vDeleted, vertices, this.vertexSlots);
+      this.vertexAttributes.resize(vertices, this.vertexSlots);
+    }
+    if (2 * edges > this.heNext.length) {
+      const used = 2 * this.edgeSlots;
+      this.heNext = grow(this.heNext, 2 * edges, used);
+      this.hePrev = grow(this.hePrev, 2 * edges, used);
+      this.heVertex = grow(this.heVertex, 2 * edges, used);
+      this.heFace = grow(this.heFace, 2 * edges, used);
+      this.eDeleted = grow(this.eDeleted, edges, this.edgeSlots);
+      this.halfedgeAttributes.resize(2 * edges, used);
+      this.edgeAttributes.resize(edges, this.edgeSlots);
+    }
+    if (faces > this.fHalfedge.length) {
+      this.fHalfedge = grow(this.fHalfedge, faces, this.faceSlots);
+      this.fDeleted = grow(this.fDeleted, faces, this.faceSlots);
+      this.faceAttributes.resize(faces, this.faceSlots);
+    }
+  }
+
+  /** Adds a vertex at (x, y, z), isolated; its other attributes are zero. */
+  addVertex(x = 0, y = 0, z = 0): number {
+    if (this.vertexSlots === this.vHalfedge.length) this.reserve({ vertices: nextCapacity(this.vertexSlots) });
+    const v = this.vertexSlots++;
+    this.vHalfedge[v] = -1;
+    this.vDeleted[v] = 0;
+    this.setPosition(v, x, y, z);
+    return v;
+  }
+
+  /** Adds an edge; its halfedges are `2e` and `2e + 1`, with every relation -1 and zeroed attributes. */
+  addEdge(): number {
+    if (this.edgeSlots === this.heNext.length >> 1) this.reserve({ edges: nextCapacity(this.edgeSlots) });
+    const e = this.edgeSlots++;
+    this.eDeleted[e] = 0;
+    for (let h = 2 * e; h < 2 * e + 2; h++) {
+      this.heNext[h] = -1;
+      this.hePrev[h] = -1;
+      this.heVertex[h] = -1;
+      this.heFace[h] = -1;
+    }
+    return e;
+  }
+
+  /** Adds a face with no halfedge yet; set `fHalfedge` and the loop's `heFace` next. */
+  addFace(): number {
+    if (this.faceSlots === this.fHalfedge.length) this.reserve({ faces: nextCapacity(this.faceSlots) });
+    const f = this.faceSlots++;
+    this.fHalfedge[f] = -1;
+    this.fDeleted[f] = 0;
+    return f;
+  }
+
+  /** Marks a vertex deleted. The caller has already unlinked it. */
+  deleteVertex(v: number): void {
+    if (this.vDeleted[v] === 1) return;
+    this.vDeleted[v] = 1;
+    this.vHalfedge[v] = -1;
+    this.deletedVertices++;
+  }
+  /** Marks an edge (both halfedges) deleted. The caller has already unlinked it. */
+  deleteEdge(e: number): void {
+    if (this.eDeleted[e] === 1) return;
+    this.eDeleted[e] = 1;
+    for (let h = 2 * e; h < 2 * e + 2; h++) {
+      this.heNext[h] = this.hePrev[h] = this.heVertex[h] = this.heFace[h] = -1;
+    }
+    this.deletedEdges++;
+  }
+  /** Marks a face deleted. The caller has already unlinked it. */
+  deleteFace(f: number): void {
+    if (this.fDeleted[f] === 1) return;
+    this.fDeleted[f] = 1;
+    this.fHalfedge[f] = -1;
+    this.deletedFaces++;
+  }
+
+  /**
+   * Removes deleted slots, renumbering the live elements in their current order, and shrinks the
+   * arrays to fit. Returns old → new id maps (-1 for the deleted) so callers can follow selections.
+   */
+  compact(): CompactionMaps {
+    const vertexMap = liveMap(this.vertexSlots, (v) => this.vDeleted[v] === 0);
+    const edgeMap = liveMap(this.edgeSlots, (e) => this.eDeleted[e] === 0);
+    const faceMap = liveMap(this.faceSlots, (f) => this.fDeleted[f] === 0);
+    const nV = this.nVertices;
+    const nE = this.nEdges;
+    const nF = this.nFaces;
+    const halfedgeMap = new Int32Array(2 * this.edgeSlots);
+    for (let e = 0; e < this.edgeSlots; e++) {
+      const ne = edgeMap[e];
+      halfedgeMap[2 * e] = ne < 0 ? -1 : 2 * ne;
+      halfedgeMap[2 * e + 1] = ne < 0 ? -1 : 2 * ne + 1;
+    }
+    const mapOrNone = (map: Int32Array, id: number) => (id < 0 ? id : map[id]);
+
+    const heNext = new Int32Array(2 * nE);
+    const hePrev = new Int32Array(2 * nE);
+    const heVertex = new Int32Array(2 * nE);
+    const heFace = new Int32Array(2 * nE);
+    for (let h = 0; h < 2 * this.edgeSlots; h++) {
+      const nh = halfedgeMap[h];
+      if (nh < 0) continue;
+      heNext[nh] = halfedgeMap[this.heNext[h]];
+      hePrev[nh] = halfedgeMap[this.hePrev[h]];
+      heVertex[nh] = vertexMap[this.heVertex[h]];
+      heFace[nh] = mapOrNone(faceMap, this.heFace[h]);
+    }
+    const vHalfedge = new Int32Array(nV);
+    for (let v = 0; v < this.vertexSlots; v++) {
+      const nv = vertexMap[v];
+      if (nv >= 0) vHalfedge[nv] = mapOrNone(halfedgeMap, this.vHalfedge[v]);
+    }
+    const fHalfedge = new Int32Array(nF);
+    for (let f = 0; f < this.faceSlots; f++) {
+      const nf = faceMap[f];
+      if (nf >= 0) fHalfedge[nf] = halfedgeMap[this.fHalfedge[f]];
+    }
+
+    this.vertexAttributes.permute(vertexMap, nV);
+    this.halfedgeAttributes.permute(halfedgeMap, 2 * nE);
+    this.edgeAttributes.permute(edgeMap, nE);
+    this.faceAttributes.permute(faceMap, nF);
+    Object.assign(this, { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge });
+    this.vDeleted = new Uint8Array(nV);
+    this.eDeleted = new Uint8Array(nE);
+    this.fDeleted = new Uint8Array(nF);
+    this.vertexSlots = nV;
+    this.edgeSlots = nE;
+    this.faceSlots = nF;
+    this.deletedVertices = this.deletedEdges = this.deletedFaces = 0;
+    return { vertices: vertexMap, edges: edgeMap, faces: faceMap };
+  }
+
+  /** A deep copy, attributes included, with no spare capacity. */
+  clone(): HalfedgeMesh {
+    const copy = Object.create(HalfedgeMesh.prototype) as HalfedgeMesh;
+    const nH = 2 * this.edgeSlots;
+    Object.assign(copy, {
+      heNext: this.heNext.slice(0, nH),
+      hePrev: this.hePrev.slice(0, nH),
+      heVertex: this.heVertex.slice(0, nH),
+      heFace: this.heFace.slice(0, nH),
+      vHalfedge: this.vHalfedge.slice(0, this.vertexSlots),
+      fHalfedge: this.fHalfedge.slice(0, this.faceSlots),
+      vDeleted: this.vDeleted.slice(0, this.vertexSlots),
+      eDeleted: this.eDeleted.slice(0, this.edgeSlots),
+      fDeleted: this.fDeleted.slice(0, this.faceSlots),
+      vertexSlots: this.vertexSlots,
+      edgeSlots: this.edgeSlots,
+      faceSlots: this.faceSlots,
+      deletedVertices: this.deletedVertices,
+      deletedEdges: this.deletedEdges,
+      deletedFaces: this.deletedFaces,
+      vertexAttributes: this.vertexAttributes.clone(this.vertexSlots, this.vertexSlots),
+      halfedgeAttributes: this.halfedgeAttributes.clone(nH, nH),
+      edgeAttributes: this.edgeAttributes.clone(this.edgeSlots, this.edgeSlots),
+      faceAttributes: this.faceAttributes.clone(this.faceSlots, this.faceSlots),
+    });
+    return copy;
+  }
+}
+
+function nextCapacity(used: number): number {
+  return Math.max(8, Math.ceil(used * 1.5));
+}
+
+function grow<T extends Int32Array | Uint8Array>(array: T, capacity: number, used: number): T {
+  if (capacity > 0x7fffffff) throw new InvalidInputError(`a mesh cannot hold ${capacity} elements of one kind`);
+  const next = new (array.constructor as new (n: number) => T)(capacity);
+  next.set(array.subarray(0, used));
+  return next;
+}
+
+function liveMap(slots: number, isLive: (i: number) => boolean): Int32Array {
+  const map = new Int32Array(slots);
+  let next = 0;
+  for (let i = 0; i < slots; i++) map[i] = isLive(i) ? next++ : -1;
+  return map;
+}

@@ -1,0 +1,2 @@
+/** halfedge-lab: a halfedge (DCEL) mesh library. */
+export * from './core/index.js';
