@@ -54,17 +54,16 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
 
   // 1. keep the faces a halfedge mesh can hold
   const kept = keepValidFaces(soup, report);
-  const { corners, starts } = kept;
   progress(0.2);
 
   // 2. pair the corners that share an edge
-  let pairing = pairCorners(corners, starts, nInputVertices);
+  let pairing = pairCorners(kept.corners, kept.starts, nInputVertices);
   progress(0.4);
 
   // 3. orient: flip faces until every pair runs opposite ways, or cut where it cannot
   if (pairing.sameDirectionPairs > 0) {
     orientFaces(kept, pairing.twin, report);
-    pairing = pairCorners(corners, starts, nInputVertices);
+    pairing = pairCorners(kept.corners, kept.starts, nInputVertices);
     cutSeams(kept, pairing.twin, report);
   }
 
@@ -72,9 +71,9 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   for (const group of pairing.crowded) keepOnePair(group, kept, pairing.twin, report);
   progress(0.5);
 
-  // 5. number the halfedges and link each face loop
-  const { mesh, halfedgeOf } = linkFaces(kept, pairing.twin, nInputVertices);
-  copyAttributes(soup, kept, mesh, halfedgeOf);
+  // 5. number the halfedges and link each face loop (twin becomes each corner's halfedge)
+  const mesh = linkFaces(kept, pairing.twin, nInputVertices);
+  copyAttributes(soup, kept, mesh, pairing.twin);
   progress(0.7);
 
   // 6. one fan per vertex
@@ -82,101 +81,183 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   progress(0.9);
 
   // 7. link the boundary loops
-  linkBoundaries(mesh);
+  if (mesh.halfedgeSlots > kept.starts[kept.faceCount]) linkBoundaries(mesh);
   reportVertices(mesh, nInputVertices, report);
   progress(1);
 
   return {
     mesh,
     report: report.finish(nInputVertices, nInputFaces),
-    inputFaceOf: kept.faceCount === nInputFaces ? null : kept.inputFace.slice(0, kept.faceCount),
+    inputFaceOf: kept.inputFace?.slice(0, kept.faceCount) ?? null,
   };
 }
 
-/** The faces that survive phase 1, as corner lists (CSR like the soup). */
+type IndexArray = Int32Array | Uint32Array;
+
+/**
+ * The faces that survive phase 1, as corner lists (CSR like the soup). When every face survives
+ * as it is, these are the soup's own arrays (not copied; never written to).
+ */
 interface KeptFaces {
-  corners: Int32Array;
-  starts: Int32Array;
+  corners: IndexArray;
+  starts: IndexArray;
   faceCount: number;
-  /** Kept face → soup face. */
-  inputFace: Int32Array;
-  /** Kept corner → soup corner (for corner attributes). */
-  cornerSource: Int32Array;
+  /** Kept face → soup face, or null when they are the same. */
+  inputFace: Int32Array | null;
+  /** Kept corner → soup corner, kept only when the soup has corner attributes. */
+  cornerSource: Int32Array | null;
+}
+
+function inputFaceOf(kept: KeptFaces, f: number): number {
+  return kept.inputFace ? kept.inputFace[f] : f;
 }
 
 function keepValidFaces(soup: PolygonSoup, report: ReportBuilder): KeptFaces {
   const { faceStarts, faceIndices } = soup;
   const nV = soup.positions.length / 3;
   const nF = faceStarts.length - 1;
+  const stamp = new VertexStamp(nV);
+  const trackCorners = (soup.cornerAttributes?.length ?? 0) > 0;
+
+  // the common case: every face is already fine, so its lists are copied as they are
+  let firstBad = 0;
+  while (firstBad < nF && isSimpleFace(faceIndices, faceStarts[firstBad], faceStarts[firstBad + 1], nV, stamp)) {
+    firstBad++;
+  }
+  if (firstBad === nF) {
+    return {
+      corners: faceIndices,
+      starts: faceStarts,
+      faceCount: nF,
+      inputFace: null,
+      cornerSource: trackCorners ? identity(faceIndices.length) : null,
+    };
+  }
+
   const corners = new Int32Array(faceIndices.length);
-  const cornerSource = new Int32Array(faceIndices.length);
+  const cornerSource = trackCorners ? new Int32Array(faceIndices.length) : null;
   const starts = new Int32Array(nF + 1);
   const inputFace = new Int32Array(nF);
-  let stamp: Int32Array | null = null; // last face that used each vertex (faces of 4+ corners)
   let nc = 0;
   let nk = 0;
-
   for (let f = 0; f < nF; f++) {
-    const first = nc;
-    const end = faceStarts[f + 1];
-    let outOfRange = -1;
-    let collapsed = false;
-    for (let i = faceStarts[f]; i < end; i++) {
-      const v = faceIndices[i];
-      if (!(v >= 0 && v < nV)) outOfRange = v;
-      if (nc > first && corners[nc - 1] === v) {
-        collapsed = true;
-        continue;
+    const s = faceStarts[f];
+    const e = faceStarts[f + 1];
+    if (f < firstBad || isSimpleFace(faceIndices, s, e, nV, stamp)) {
+      for (let i = s; i < e; i++) {
+        if (cornerSource) cornerSource[nc] = i;
+        corners[nc++] = faceIndices[i];
       }
-      cornerSource[nc] = i;
-      corners[nc++] = v;
-    }
-    while (nc - first > 1 && corners[nc - 1] === corners[first]) {
-      nc--;
-      collapsed = true;
-    }
-    const listed = Array.from(faceIndices.subarray(faceStarts[f], end));
-    if (outOfRange !== -1) {
-      nc = first;
-      report.add('out-of-range-index', {
-        message: `face ${f} uses vertex ${outOfRange}, but the vertices are numbered 0..${nV - 1}`,
-        inputFaces: [f],
-      });
-      continue;
-    }
-    const degree = nc - first;
-    let repeated = -1;
-    if (degree > 3) {
-      stamp ??= new Int32Array(nV).fill(-1);
-      for (let c = first; c < nc; c++) {
-        const v = corners[c];
-        if (stamp[v] === f) repeated = v;
-        stamp[v] = f;
-      }
-    }
-    if (degree < 3 || repeated !== -1) {
-      nc = first;
-      report.add('degenerate-face', {
-        message:
-          degree < 3
-            ? `face ${f} (${listed.join(', ')}) has fewer than 3 distinct vertices`
-            : `face ${f} (${listed.join(', ')}) passes through vertex ${repeated} twice`,
-        inputFaces: [f],
-        inputVertices: [...new Set(listed)],
-      });
-      continue;
-    }
-    if (collapsed) {
-      report.add('collapsed-repeated-vertex', {
-        message: `face ${f} (${listed.join(', ')}) kept as (${Array.from(corners.subarray(first, nc)).join(', ')})`,
-        inputFaces: [f],
-        faces: [nk],
-      });
+    } else {
+      const kept = repairFace(soup, f, corners, cornerSource, nc, nk, stamp, report);
+      if (kept === nc) continue;
+      nc = kept;
     }
     inputFace[nk++] = f;
     starts[nk] = nc;
   }
   return { corners, starts, faceCount: nk, inputFace, cornerSource };
+}
+
+/** Marks vertices with the face that last used them, to spot a vertex used twice by one face. */
+class VertexStamp {
+  private stamp: Int32Array | null = null;
+  private current = 0;
+  constructor(private readonly nV: number) {}
+  /** Starts a new face. */
+  next(): void {
+    this.current++;
+    this.stamp ??= new Int32Array(this.nV);
+  }
+  /** Stamps v and says whether it was already stamped for this face. */
+  seen(v: number): boolean {
+    const stamp = this.stamp!;
+    if (stamp[v] === this.current) return true;
+    stamp[v] = this.current;
+    return false;
+  }
+}
+
+/** In range, at least 3 corners, no vertex twice. */
+function isSimpleFace(indices: PolygonSoup['faceIndices'], s: number, e: number, nV: number, stamp: VertexStamp): boolean {
+  const k = e - s;
+  if (k < 3) return false;
+  for (let i = s; i < e; i++) {
+    const v = indices[i];
+    if (!(v >= 0 && v < nV)) return false;
+  }
+  if (k === 3) {
+    const a = indices[s];
+    const b = indices[s + 1];
+    const c = indices[s + 2];
+    return a !== b && b !== c && c !== a;
+  }
+  stamp.next();
+  for (let i = s; i < e; i++) if (stamp.seen(indices[i])) return false;
+  return true;
+}
+
+/**
+ * Face `f` is not simple: drop it (out-of-range index, fewer than 3 distinct vertices, a vertex
+ * visited twice) or, when it only repeats a vertex in a row, keep it without the repeat. Writes
+ * the kept corners from `nc` on and returns the new corner count (`nc` when dropped).
+ */
+function repairFace(
+  soup: PolygonSoup,
+  f: number,
+  corners: Int32Array,
+  cornerSource: Int32Array | null,
+  nc: number,
+  keptId: number,
+  stamp: VertexStamp,
+  report: ReportBuilder,
+): number {
+  const { faceStarts, faceIndices } = soup;
+  const nV = soup.positions.length / 3;
+  const listed = Array.from(faceIndices.subarray(faceStarts[f], faceStarts[f + 1]));
+  const outOfRange = listed.find((v) => !(v >= 0 && v < nV));
+  if (outOfRange !== undefined) {
+    report.add('out-of-range-index', {
+      message: `face ${f} uses vertex ${outOfRange}, but the vertices are numbered 0..${nV - 1}`,
+      inputFaces: [f],
+    });
+    return nc;
+  }
+  // drop repeats in a row, the last corner wrapping round to the first
+  const first = nc;
+  for (let i = faceStarts[f]; i < faceStarts[f + 1]; i++) {
+    if (nc > first && corners[nc - 1] === faceIndices[i]) continue;
+    if (cornerSource) cornerSource[nc] = i;
+    corners[nc++] = faceIndices[i];
+  }
+  while (nc - first > 1 && corners[nc - 1] === corners[first]) nc--;
+  const degree = nc - first;
+  let repeated = -1;
+  stamp.next();
+  for (let c = first; c < nc; c++) if (stamp.seen(corners[c])) repeated = corners[c];
+  if (degree < 3 || repeated !== -1) {
+    report.add('degenerate-face', {
+      message:
+        degree < 3
+          ? `face ${f} (${listed.join(', ')}) has fewer than 3 distinct vertices`
+          : `face ${f} (${listed.join(', ')}) passes through vertex ${repeated} twice`,
+      inputFaces: [f],
+      inputVertices: [...new Set(listed)],
+    });
+    return first;
+  }
+  report.add('collapsed-repeated-vertex', {
+    message: `face ${f} (${listed.join(', ')}) kept as (${Array.from(corners.subarray(first, nc)).join(', ')})`,
+    inputFaces: [f],
+    faces: [keptId],
+  });
+  return nc;
+}
+
+function identity(n: number): Int32Array {
+  const ids = new Int32Array(n);
+  for (let i = 0; i < n; i++) ids[i] = i;
+  return ids;
 }
 
 interface Pairing {
@@ -188,7 +269,7 @@ interface Pairing {
   crowded: number[][];
 }
 
-function pairCorners(corners: Int32Array, starts: Int32Array, nV: number): Pairing {
+function pairCorners(corners: IndexArray, starts: IndexArray, nV: number): Pairing {
   const nF = starts.length - 1;
   const nC = starts[nF];
   // bucket the corners by the lower vertex of their edge (counting sort)
@@ -203,40 +284,39 @@ function pairCorners(corners: Int32Array, starts: Int32Array, nV: number): Pairi
     }
   }
   for (let v = 0; v < nV; v++) bucketStart[v + 1] += bucketStart[v];
+  // entries: (corner, upper vertex) pairs, side by side so one cache line holds both
   const fill = bucketStart.slice(0, nV);
-  const order = new Int32Array(nC);
-  const upper = new Int32Array(nC);
+  const entries = new Int32Array(2 * nC);
   for (let f = 0; f < nF; f++) {
     const s = starts[f];
     const e = starts[f + 1];
     for (let c = s; c < e; c++) {
       const a = corners[c];
       const b = corners[c + 1 < e ? c + 1 : s];
-      const slot = fill[a < b ? a : b]++;
-      order[slot] = c;
-      upper[slot] = a < b ? b : a;
+      const slot = 2 * fill[a < b ? a : b]++;
+      entries[slot] = c;
+      entries[slot + 1] = a < b ? b : a;
     }
   }
 
   // within a bucket, corners with the same upper vertex share an edge: stamp the upper vertex
-  // with the bucket it was last seen in and the first corner seen there
+  // with the bucket it was last seen in and the first corner seen there (side by side again)
   const twin = new Int32Array(nC).fill(-1);
-  const stampBucket = new Int32Array(nV).fill(-1);
-  const firstCorner = new Int32Array(nV);
+  const stamps = new Int32Array(2 * nV).fill(-1);
   const crowded: number[][] = [];
   const crowdedByFirst = new Map<number, number[]>();
   let sameDirectionPairs = 0;
   for (let lo = 0; lo < nV; lo++) {
-    const end = bucketStart[lo + 1];
-    for (let slot = bucketStart[lo]; slot < end; slot++) {
-      const c = order[slot];
-      const hi = upper[slot];
-      if (stampBucket[hi] !== lo) {
-        stampBucket[hi] = lo;
-        firstCorner[hi] = c;
+    const end = 2 * bucketStart[lo + 1];
+    for (let slot = 2 * bucketStart[lo]; slot < end; slot += 2) {
+      const c = entries[slot];
+      const hi = 2 * entries[slot + 1];
+      if (stamps[hi] !== lo) {
+        stamps[hi] = lo;
+        stamps[hi + 1] = c;
         continue;
       }
-      const first = firstCorner[hi];
+      const first = stamps[hi + 1];
       const partner = twin[first];
       if (partner === -1) {
         twin[first] = c;
@@ -262,7 +342,7 @@ function pairCorners(corners: Int32Array, starts: Int32Array, nV: number): Pairi
 }
 
 /** Face of each corner. */
-function cornerFaces(starts: Int32Array): Int32Array {
+function cornerFaces(starts: IndexArray): Int32Array {
   const nF = starts.length - 1;
   const faceOf = new Int32Array(starts[nF]);
   for (let f = 0; f < nF; f++) faceOf.fill(f, starts[f], starts[f + 1]);
@@ -275,7 +355,8 @@ function cornerFaces(starts: Int32Array): Int32Array {
  * An edge whose faces still disagree when the search meets it again is a non-orientable seam.
  */
 function orientFaces(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
-  const { corners, starts, faceCount: nF, inputFace } = kept;
+  const { starts, faceCount: nF } = kept;
+  const corners = (kept.corners = Int32Array.from(kept.corners)); // the soup's own may not be written
   const faceOf = cornerFaces(starts);
   const flip = new Uint8Array(nF);
   const visited = new Uint8Array(nF);
@@ -310,10 +391,10 @@ function orientFaces(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): 
     if (!flip[f]) continue;
     // reverse all but the first corner, so the face still starts at the same vertex
     corners.subarray(starts[f] + 1, starts[f + 1]).reverse();
-    kept.cornerSource.subarray(starts[f] + 1, starts[f + 1]).reverse();
+    kept.cornerSource?.subarray(starts[f] + 1, starts[f + 1]).reverse();
     report.add('reoriented-face', {
-      message: `face ${inputFace[f]} flipped`,
-      inputFaces: [inputFace[f]],
+      message: `face ${inputFaceOf(kept, f)} flipped`,
+      inputFaces: [inputFaceOf(kept, f)],
       faces: [f],
     });
   }
@@ -324,7 +405,7 @@ function orientFaces(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): 
  * cut it, so both corners get a boundary twin.
  */
 function cutSeams(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
-  const { corners, starts, inputFace } = kept;
+  const { corners, starts } = kept;
   for (let c = 0; c < twin.length; c++) {
     const d = twin[c];
     if (d <= c || corners[c] !== corners[d]) continue;
@@ -334,9 +415,9 @@ function cutSeams(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): voi
     const faces = [faceOfCorner(starts, c), faceOfCorner(starts, d)];
     const [a, b] = cornerEdge(kept, c);
     report.add('non-orientable', {
-      message: `edge ${a}–${b} between faces ${inputFace[faces[0]]} and ${inputFace[faces[1]]} was cut open`,
+      message: `edge ${a}–${b} between faces ${inputFaceOf(kept, faces[0])} and ${inputFaceOf(kept, faces[1])} was cut open`,
       inputVertices: [a, b],
-      inputFaces: faces.map((f) => inputFace[f]),
+      inputFaces: faces.map((f) => inputFaceOf(kept, f)),
       faces,
     });
   }
@@ -344,7 +425,7 @@ function cutSeams(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): voi
 
 /** Of the corners along one edge, pairs the first with the first that runs the other way. */
 function keepOnePair(group: number[], kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
-  const { corners, starts, inputFace } = kept;
+  const { corners, starts } = kept;
   const first = group[0];
   const partner = group.find((c) => corners[c] !== corners[first]);
   if (partner !== undefined) {
@@ -355,19 +436,19 @@ function keepOnePair(group: number[], kept: KeptFaces, twin: Int32Array, report:
   const joined = partner === undefined ? [] : [faceOfCorner(starts, first), faceOfCorner(starts, partner)];
   const detached = faces.filter((f) => !joined.includes(f));
   const [a, b] = cornerEdge(kept, first);
-  const names = (list: number[]) => list.map((f) => inputFace[f]).join(', ');
+  const names = (list: number[]) => list.map((f) => inputFaceOf(kept, f)).join(', ');
   report.add('non-manifold-edge', {
     message:
       `edge ${a}–${b} is shared by ${faces.length} faces (${names(faces)}): ` +
       (joined.length ? `${names(joined)} stay joined, ` : '') +
       `${names(detached)} detached`,
     inputVertices: [a, b],
-    inputFaces: faces.map((f) => inputFace[f]),
+    inputFaces: faces.map((f) => inputFaceOf(kept, f)),
     faces,
   });
 }
 
-function faceOfCorner(starts: Int32Array, c: number): number {
+function faceOfCorner(starts: IndexArray, c: number): number {
   // the last face whose start is at or before c (binary search: only rare repairs call this)
   let lo = 0;
   let hi = starts.length - 1;
@@ -387,22 +468,17 @@ function cornerEdge(kept: KeptFaces, c: number): [number, number] {
 }
 
 /**
- * Numbers the halfedges: each corner's halfedge and its twin's take the two slots of one edge,
- * in order of first appearance, so face 0's halfedges are h0, h2, h4, … Then links each face loop.
- * Returns the mesh (boundary halfedges not yet linked) and each corner's halfedge.
+ * Numbers the halfedges and links each face loop, in one pass over the corners. A corner's
+ * halfedge and its twin's take the two slots of one edge, in order of first appearance, so face
+ * 0's halfedges are h0, h2, h4, … To spare a second array of corner size, `twin` is overwritten
+ * as the pass goes: afterwards `twin[c]` is the halfedge of corner c.
  */
-function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number): { mesh: HalfedgeMesh; halfedgeOf: Int32Array } {
+function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number): HalfedgeMesh {
   const { corners, starts, faceCount: nF } = kept;
   const nC = starts[nF];
-  const halfedgeOf = new Int32Array(nC).fill(-1);
-  let nE = 0;
-  for (let c = 0; c < nC; c++) {
-    if (halfedgeOf[c] !== -1) continue;
-    const h = 2 * nE++;
-    halfedgeOf[c] = h;
-    const d = twin[c];
-    if (d >= 0) halfedgeOf[d] = h + 1;
-  }
+  let unpaired = 0;
+  for (let c = 0; c < nC; c++) if (twin[c] === -1) unpaired++;
+  const nE = (nC + unpaired) / 2;
   if (nE > 0x3fffffff) throw new InvalidInputError(`${nE} edges are more than one mesh can hold`);
 
   const mesh = new HalfedgeMesh({ vertices: nV, edges: nE, faces: nF });
@@ -410,25 +486,37 @@ function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number): { mesh: Halfe
   mesh.edgeSlots = nE;
   mesh.faceSlots = nF;
   const { heNext, hePrev, heVertex, heFace, fHalfedge } = mesh;
-  heFace.fill(-1);
+  if (unpaired > 0) heFace.fill(-1);
+  let edges = 0;
   for (let f = 0; f < nF; f++) {
     const s = starts[f];
     const e = starts[f + 1];
-    let prev = halfedgeOf[e - 1];
+    let first = -1;
+    let prev = -1;
     for (let c = s; c < e; c++) {
-      const h = halfedgeOf[c];
+      const d = twin[c];
+      // d > c or none: c comes first on its edge and opens it; d < c: d opened it, and twin[d]
+      // already holds d's halfedge
+      const h = d < c && d >= 0 ? twin[d] ^ 1 : 2 * edges++;
+      twin[c] = h;
       heVertex[h] = corners[c];
       heFace[h] = f;
-      hePrev[h] = prev;
-      heNext[prev] = h;
+      if (prev === -1) first = h;
+      else {
+        hePrev[h] = prev;
+        heNext[prev] = h;
+      }
       prev = h;
     }
-    fHalfedge[f] = halfedgeOf[s];
+    hePrev[first] = prev;
+    heNext[prev] = first;
+    fHalfedge[f] = first;
   }
-  return { mesh, halfedgeOf };
+  return mesh;
 }
 
 function copyAttributes(soup: PolygonSoup, kept: KeptFaces, mesh: HalfedgeMesh, halfedgeOf: Int32Array): void {
+  const faceOf = (f: number) => inputFaceOf(kept, f);
   mesh.positions.set(soup.positions);
   for (const { name, itemSize, data, interpolation } of soup.vertexAttributes ?? []) {
     mesh.vertexAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data.set(data);
@@ -436,14 +524,14 @@ function copyAttributes(soup: PolygonSoup, kept: KeptFaces, mesh: HalfedgeMesh, 
   for (const { name, itemSize, data, interpolation } of soup.faceAttributes ?? []) {
     const target = mesh.faceAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data;
     for (let f = 0; f < kept.faceCount; f++) {
-      const src = kept.inputFace[f];
+      const src = faceOf(f);
       target.set(data.subarray(src * itemSize, (src + 1) * itemSize), f * itemSize);
     }
   }
   for (const { name, itemSize, data, interpolation } of soup.cornerAttributes ?? []) {
     const target = mesh.halfedgeAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data;
     for (let c = 0; c < halfedgeOf.length; c++) {
-      const src = kept.cornerSource[c];
+      const src = kept.cornerSource![c];
       target.set(data.subarray(src * itemSize, (src + 1) * itemSize), halfedgeOf[c] * itemSize);
     }
   }
