@@ -156,7 +156,13 @@ function keepValidFaces(soup: PolygonSoup, report: ReportBuilder): KeptFaces {
     inputFace[nk++] = f;
     starts[nk] = nc;
   }
-  return { corners, starts, faceCount: nk, inputFace, cornerSource };
+  return {
+    corners: corners.subarray(0, nc),
+    starts: starts.subarray(0, nk + 1),
+    faceCount: nk,
+    inputFace,
+    cornerSource: cornerSource?.subarray(0, nc) ?? null,
+  };
 }
 
 /** Marks vertices with the face that last used them, to spot a vertex used twice by one face. */

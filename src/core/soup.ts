@@ -108,3 +108,49 @@ export function checkSoupShape(soup: PolygonSoup): void {
     }
   }
 }
+
+/**
+ * One soup holding several, side by side (vertex ids of each shifted past the previous ones).
+ * Attributes are dropped unless every soup has them with the same shape.
+ * @example const scene = mergeSoups([cube(), torus(8, 6)]);
+ */
+export function mergeSoups(soups: PolygonSoup[]): PolygonSoup {
+  const vertexCount = soups.reduce((n, s) => n + s.positions.length / 3, 0);
+  const faceCount = soups.reduce((n, s) => n + s.faceStarts.length - 1, 0);
+  const cornerCount = soups.reduce((n, s) => n + s.faceIndices.length, 0);
+  const positions = new Float64Array(3 * vertexCount);
+  const faceStarts = new Uint32Array(faceCount + 1);
+  const faceIndices = new Uint32Array(cornerCount);
+  let vertexOffset = 0;
+  let faceOffset = 0;
+  let cornerOffset = 0;
+  for (const soup of soups) {
+    positions.set(soup.positions, 3 * vertexOffset);
+    for (let f = 1; f < soup.faceStarts.length; f++) faceStarts[faceOffset + f] = cornerOffset + soup.faceStarts[f];
+    for (let i = 0; i < soup.faceIndices.length; i++) faceIndices[cornerOffset + i] = soup.faceIndices[i] + vertexOffset;
+    vertexOffset += soup.positions.length / 3;
+    faceOffset += soup.faceStarts.length - 1;
+    cornerOffset += soup.faceIndices.length;
+  }
+  const merged: PolygonSoup = { positions, faceStarts, faceIndices };
+  for (const key of ['vertexAttributes', 'faceAttributes', 'cornerAttributes'] as const) {
+    const first = soups[0]?.[key];
+    if (!first) continue;
+    const attributes = first.flatMap((attribute) => {
+      const parts = soups.map((s) => s[key]?.find((a) => a.name === attribute.name));
+      if (parts.some((a) => !a || a.itemSize !== attribute.itemSize || a.data.constructor !== attribute.data.constructor)) {
+        return [];
+      }
+      const length = parts.reduce((n, a) => n + a!.data.length, 0);
+      const data = new (attribute.data.constructor as new (n: number) => typeof attribute.data)(length);
+      let offset = 0;
+      for (const part of parts) {
+        data.set(part!.data, offset);
+        offset += part!.data.length;
+      }
+      return [{ ...attribute, data }];
+    });
+    if (attributes.length > 0) merged[key] = attributes;
+  }
+  return merged;
+}
