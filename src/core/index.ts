@@ -11,6 +11,7 @@ export * from './geometry.js';
 export * from './mesh.js';
 export * from './operation.js';
 export * from './report.js';
+export * from './serialize.js';
 export * from './shapes.js';
 export * from './soup.js';
 export * from './stats.js';

@@ -337,6 +337,18 @@ export class HalfedgeMesh {
     this.deletedFaces++;
   }
 
+  /** Recounts the deleted slots from the flags (after the arrays were replaced wholesale). */
+  recountDeleted(): void {
+    const count = (flags: Uint8Array, slots: number) => {
+      let n = 0;
+      for (let i = 0; i < slots; i++) n += flags[i];
+      return n;
+    };
+    this.deletedVertices = count(this.vDeleted, this.vertexSlots);
+    this.deletedEdges = count(this.eDeleted, this.edgeSlots);
+    this.deletedFaces = count(this.fDeleted, this.faceSlots);
+  }
+
   /**
    * Removes deleted slots, renumbering the live elements in their current order, and shrinks the
    * arrays to fit. Returns old → new id maps (-1 for the deleted) so callers can follow selections.
