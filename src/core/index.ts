@@ -16,3 +16,7 @@ export * from './shapes.js';
 export * from './soup.js';
 export * from './stats.js';
 export * from './validate.js';
+export * from './io/index.js';
+export * from './edits/index.js';
+export * from './cut/index.js';
+export * from './subdivision/index.js';

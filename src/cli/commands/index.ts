@@ -1,0 +1,17 @@
+/** The CLI's commands, by name. Each lives in its own file. */
+import { convert } from './convert.js';
+import { stats } from './stats.js';
+import { validateCommand } from './validate.js';
+
+export interface Command {
+  usage: string;
+  summary: string;
+  /** Returns the exit status. */
+  run(args: string[]): number | Promise<number>;
+}
+
+export const commands: Record<string, Command> = {
+  stats,
+  validate: validateCommand,
+  convert,
+};

@@ -1,0 +1,34 @@
+#!/usr/bin/env node
+/**
+ * The command line: `halfedge-lab COMMAND [options]` (or `npm run cli -- COMMAND …` in the repo).
+ *
+ * Exit status: 0 done, 1 the command ran but found problems (e.g. `validate` on a mesh that
+ * needed repairs), 2 a bad file or bad arguments, with one line on stderr saying what and where.
+ */
+import { commands } from './commands/index.js';
+import { UsageError, reportFailure } from './io.js';
+
+function usage(): string {
+  const lines = Object.values(commands).map((c) => `  ${c.usage.padEnd(58)} ${c.summary}`);
+  return ['usage: halfedge-lab COMMAND [options]', '', 'commands:', ...lines].join('\n');
+}
+
+async function main(argv: string[]): Promise<number> {
+  const [name, ...rest] = argv;
+  if (!name || name === '--help' || name === '-h' || name === 'help') {
+    console.log(usage());
+    return name ? 0 : 2;
+  }
+  const command = commands[name];
+  if (!command) throw new UsageError(`unknown command '${name}' (try --help)`);
+  return command.run(rest);
+}
+
+main(process.argv.slice(2)).then(
+  (status) => {
+    process.exitCode = status;
+  },
+  (error: unknown) => {
+    process.exitCode = reportFailure(error);
+  },
+);

@@ -1,0 +1,474 @@
+/**
+ * The teaching app: it shows the snapshots the session worker sends and keeps only view state
+ * (camera, selection, the path walked, which table is open). Every change to the mesh is asked of
+ * the worker; every pointer question is answered here, from the snapshot's arrays.
+ */
+import { Box3, Vector3 } from 'three';
+import { deserializeMesh, faceCentroid, faceNormal, type HalfedgeMesh } from '../core/index.js';
+import { colors } from './colors.js';
+import { CancelledError, SessionClient } from '../workers/client.js';
+import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
+import { byId, el, replace } from './dom.js';
+import { hoverHighlight, selectionHighlight } from './highlights.js';
+import { renderFileInfo } from './panels/file-info.js';
+import { renderHud } from './panels/hud.js';
+import { renderInspector } from './panels/inspector.js';
+import { renderLegend } from './panels/legend.js';
+import { RecordTables } from './panels/tables.js';
+import { TraversalPanel } from './panels/traversal.js';
+import { renderBreadcrumb, renderWalkButtons } from './panels/walk.js';
+import type { Convention } from './records.js';
+import { ArrowLayer, halfedgesNear, MAX_ARROWS } from './scene/arrows.js';
+import { emptyHighlight, HighlightLayer, type HighlightSpec } from './scene/highlight.js';
+import { pick, type PickFilter } from './scene/picking.js';
+import { SurfaceLayer } from './scene/surface.js';
+import { Viewer } from './scene/viewer.js';
+import { elementName, exists, moveKeys, type Move, type Selection, walk, type WalkStep } from './selection.js';
+
+export interface SampleModel {
+  file: string;
+  title: string;
+}
+
+/** Label every vertex and face when the mesh has at most this many of them. */
+const MAX_ID_LABELS = 400;
+
+export class App {
+  readonly client: SessionClient;
+  readonly viewer: Viewer;
+  snapshot: Snapshot | null = null;
+  mesh: HalfedgeMesh | null = null;
+  selection: Selection | null = null;
+  hovered: Selection | null = null;
+  path: WalkStep[] = [];
+  convention: Convention = 'origin';
+  filter: PickFilter = 'auto';
+  /** Larger arrows, dots and type in presentation mode. */
+  scale = 1;
+  showIds = false;
+  /** The last message shown to the student (an error, a walk that led nowhere…). */
+  message = '';
+  samples: SampleModel[] = [];
+  /** Resolves when the first mesh is on screen. */
+  readonly ready: Promise<void>;
+
+  private readonly surface = new SurfaceLayer();
+  private readonly arrows = new ArrowLayer();
+  private readonly selectionLayer = new HighlightLayer();
+  private readonly hoverLayer = new HighlightLayer(0.55, 1.3);
+  private readonly idLayer = new HighlightLayer();
+  private readonly tables: RecordTables;
+  private readonly traversal: TraversalPanel;
+  private traversalSpec: HighlightSpec | null = null;
+  private markReady!: () => void;
+
+  constructor() {
+    this.ready = new Promise((resolve) => (this.markReady = resolve));
+    this.client = new SessionClient({
+      createSessionWorker: () => new Worker(new URL('../workers/session.worker.ts', import.meta.url), { type: 'module' }),
+      createLoaderWorker: () => new Worker(new URL('../workers/loader.worker.ts', import.meta.url), { type: 'module' }),
+    });
+    this.client.onProgress = ({ label, fraction }) => this.showProgress(label, fraction);
+    this.client.onRestart = (message, snapshot) => {
+      this.say(message, 'alert');
+      if (snapshot) this.show(snapshot, false);
+    };
+
+    this.viewer = new Viewer(byId('viewport'));
+    this.viewer.add(this.surface.group, this.arrows.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
+    this.viewer.controls.addEventListener('end', () => this.refreshArrowsIfPartial());
+    this.tables = new RecordTables(byId('tables'), (s) => this.select(s), (s) => this.hover(s));
+    this.traversal = new TraversalPanel(
+      byId('traversal'),
+      () => ({ mesh: this.mesh, selection: this.selection }),
+      (spec) => {
+        this.traversalSpec = spec;
+        this.drawSelection();
+      },
+    );
+    renderLegend(byId('legend'));
+    renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move));
+    this.wireControls();
+    this.drawPanels();
+  }
+
+  // -----------------------------------------------------------------------------------------------
+  // Opening meshes
+
+  async openBytes(bytes: Uint8Array, name: string): Promise<boolean> {
+    try {
+      this.say(`Reading ${name}…`);
+      const snapshot = await this.client.open(bytes, name);
+      this.show(snapshot, true);
+      this.say(`Opened ${name}.`);
+      return true;
+    } catch (error) {
+      this.hideProgress();
+      if (error instanceof CancelledError) this.say(`${error.message}; the previous mesh stays.`);
+      else this.say(`Could not open ${name}: ${(error as Error).message}. The previous mesh stays.`, 'alert');
+      return false;
+    } finally {
+      this.hideProgress();
+    }
+  }
+
+  async openSample(file: string): Promise<boolean> {
+    const url = `${import.meta.env.BASE_URL}models/${encodeURIComponent(file)}`;
+    const response = await fetch(url);
+    if (!response.ok) {
+      this.say(`There is no sample called ${file} (${response.status}).`, 'alert');
+      return false;
+    }
+    const select = byId<HTMLSelectElement>('sample-select');
+    select.value = file;
+    return this.openBytes(new Uint8Array(await response.arrayBuffer()), file);
+  }
+
+  async loadSampleList(): Promise<void> {
+    const response = await fetch(`${import.meta.env.BASE_URL}models/index.json`);
+    this.samples = response.ok ? ((await response.json()) as SampleModel[]) : [];
+    replace(byId('sample-select'), ...this.samples.map((s) => el('option', { value: s.file }, s.title)));
+  }
+
+  // -----------------------------------------------------------------------------------------------
+  // Asking the session for changes
+
+  async run(action: () => Promise<Snapshot | null>): Promise<Snapshot | null> {
+    try {
+      const snapshot = await action();
+      if (snapshot) this.show(snapshot, false);
+      return snapshot;
+    } catch (error) {
+      this.say((error as Error).message, 'alert');
+      return null;
+    } finally {
+      this.hideProgress();
+    }
+  }
+
+  start(request: OperationRequest) {
+    return this.run(() => this.client.start(request));
+  }
+  step() {
+    return this.run(() => this.client.step());
+  }
+  runToEnd() {
+    return this.run(() => this.client.runToEnd());
+  }
+  cancel() {
+    return this.run(() => this.client.cancel());
+  }
+  edit(request: EditRequest) {
+    return this.run(() => this.client.edit(request));
+  }
+  undo() {
+    return this.run(() => this.client.undo());
+  }
+  redo() {
+    return this.run(() => this.client.redo());
+  }
+  jump(index: number) {
+    return this.run(() => this.client.jump(index));
+  }
+
+  // -----------------------------------------------------------------------------------------------
+  // Showing a snapshot
+
+  /** Draws a snapshot; `frame` points the camera at it (a newly opened mesh). */
+  show(snapshot: Snapshot, frame: boolean): void {
+    this.snapshot = snapshot;
+    const mesh = (this.mesh = deserializeMesh(snapshot.mesh));
+    this.surface.update(mesh, snapshot.render);
+    if (this.selection && !exists(mesh, this.selection)) this.selection = null;
+    if (this.hovered && !exists(mesh, this.hovered)) this.hovered = null;
+    this.path = this.path.filter((step) => exists(mesh, step.to));
+    if (frame) {
+      this.selection = null;
+      this.path = [];
+      this.traversal.stop();
+      const planeNormal = planarNormal(mesh);
+      this.viewer.setMode(planeNormal ? 'top' : 'perspective');
+      byId('top-view').setAttribute('aria-pressed', String(Boolean(planeNormal)));
+      this.frameMesh();
+    }
+    this.refreshArrows();
+    this.tables.setMesh(mesh, this.convention);
+    this.drawSelection();
+    this.drawPanels();
+    this.markReady();
+  }
+
+  frameMesh(): void {
+    const mesh = this.mesh;
+    if (!mesh) return;
+    const box = new Box3();
+    const p = mesh.positions;
+    for (const v of mesh.vertices()) box.expandByPoint(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2]));
+    const centre = box.getCenter(new Vector3());
+    let radius = 0;
+    for (const v of mesh.vertices()) radius = Math.max(radius, centre.distanceTo(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2])));
+    this.viewer.frame(box, planarNormal(mesh) ?? new Vector3(0, 0, 1), radius);
+  }
+
+  frameSelection(): void {
+    const mesh = this.mesh;
+    const s = this.selection;
+    if (!mesh || !s) return;
+    const box = new Box3();
+    const spec = selectionHighlight(mesh, s, this.convention);
+    for (const { id } of spec.vertices) box.expandByPoint(new Vector3(...mesh.position(id)));
+    for (const { id } of spec.halfedges) {
+      box.expandByPoint(new Vector3(...mesh.position(mesh.heVertex[id])));
+      box.expandByPoint(new Vector3(...mesh.position(mesh.heVertex[mesh.heNext[id]])));
+    }
+    box.expandByScalar(box.getSize(new Vector3()).length() * 0.6 + 1e-9);
+    this.viewer.frame(box, planarNormal(mesh) ?? new Vector3(0, 0, 1));
+  }
+
+  toggleTopView(): void {
+    const top = this.viewer.mode !== 'top';
+    this.viewer.setMode(top ? 'top' : 'perspective');
+    byId('top-view').setAttribute('aria-pressed', String(top));
+    this.frameMesh();
+  }
+
+  setPresentation(on: boolean): void {
+    this.scale = on ? 1.8 : 1;
+    document.body.classList.toggle('presentation', on);
+    this.surface.setEmphasis(this.scale);
+    this.refreshArrows();
+    this.drawSelection();
+  }
+
+  // -----------------------------------------------------------------------------------------------
+  // Selecting and walking
+
+  /** Selects an element; a new selection starts a new walk. */
+  select(selection: Selection | null): void {
+    if (selection && this.mesh && !exists(this.mesh, selection)) {
+      this.say(`${elementName(selection)} does not exist in this mesh.`, 'alert');
+      return;
+    }
+    this.selection = selection;
+    this.path = selection ? [{ move: null, to: selection }] : [];
+    this.afterSelect();
+  }
+
+  /** Follows a pointer from the selection, extending the breadcrumb. */
+  walk(move: Move): boolean {
+    if (!this.mesh || !this.selection) {
+      this.say('Select an element first: click an arrow, a vertex or a face.');
+      return false;
+    }
+    const to = walk(this.mesh, this.selection, move);
+    if (typeof to === 'string') {
+      byId('walk-message').textContent = to;
+      return false;
+    }
+    byId('walk-message').textContent = '';
+    this.selection = to;
+    this.path.push({ move, to });
+    this.afterSelect();
+    return true;
+  }
+
+  back(): void {
+    if (this.path.length <= 1) return;
+    this.path.pop();
+    this.selection = this.path[this.path.length - 1].to;
+    this.afterSelect();
+  }
+
+  hover(selection: Selection | null): void {
+    this.hovered = selection;
+    if (this.mesh && selection && exists(this.mesh, selection)) this.hoverLayer.show(this.mesh, hoverHighlight(this.mesh, selection), this.scale);
+    else this.hoverLayer.clear();
+    this.viewer.requestRender();
+  }
+
+  setConvention(convention: Convention): void {
+    this.convention = convention;
+    byId<HTMLSelectElement>('convention').value = convention;
+    if (this.mesh) this.tables.setMesh(this.mesh, convention);
+    this.drawSelection();
+    this.drawPanels();
+  }
+
+  /** The element under a point of the canvas (CSS pixels), with the current filter. */
+  pickAt(x: number, y: number, filter: PickFilter = this.filter): Selection | null {
+    if (!this.mesh) return null;
+    return pick({ viewer: this.viewer, surface: this.surface, mesh: this.mesh, shown: this.arrows.shown, scale: this.scale }, x, y, filter);
+  }
+
+  /** Shows a sentence in the status line (`alert` for errors: read out at once). */
+  say(message: string, role: 'status' | 'alert' = 'status'): void {
+    this.message = message;
+    const status = byId('status');
+    status.setAttribute('role', role);
+    status.classList.toggle('error', role === 'alert');
+    status.textContent = message;
+  }
+
+  // -----------------------------------------------------------------------------------------------
+
+  private afterSelect(): void {
+    this.refreshArrowsIfPartial();
+    this.drawSelection();
+    this.drawPanels();
+    this.tables.reveal(this.selection);
+  }
+
+  private drawSelection(): void {
+    const mesh = this.mesh;
+    if (!mesh) return;
+    const spec = this.traversalSpec ?? (this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight());
+    this.selectionLayer.show(mesh, spec, this.scale);
+    this.idLayer.clear();
+    if (this.showIds && mesh.nVertices + mesh.nFaces <= MAX_ID_LABELS) this.idLayer.show(mesh, idLabels(mesh), this.scale);
+    this.viewer.requestRender();
+  }
+
+  private drawPanels(): void {
+    const snapshot = this.snapshot;
+    renderInspector(byId('record'), byId('convention-note'), this.mesh, this.selection, this.convention, (s) => this.select(s));
+    renderBreadcrumb(byId('breadcrumb'), this.path);
+    if (snapshot) {
+      renderHud(byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
+      renderFileInfo(byId('file-info'), snapshot.file, snapshot.report, (s) => this.select(s));
+    }
+  }
+
+  /** All arrows on a mesh of modest size; on a big one, those near the selection or the view. */
+  private refreshArrows(): void {
+    const mesh = this.mesh;
+    if (!mesh) return;
+    const note = byId('arrow-note');
+    if (mesh.nHalfedges <= MAX_ARROWS) {
+      this.arrows.update(mesh, null, this.scale);
+      note.hidden = true;
+    } else {
+      const focus = this.focusFace();
+      this.arrows.update(mesh, focus < 0 ? new Int32Array(0) : halfedgesNear(mesh, focus), this.scale);
+      note.hidden = false;
+      note.textContent = `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${this.selection ? 'selection' : 'centre of the view'}.`;
+    }
+    this.viewer.requestRender();
+  }
+
+  private refreshArrowsIfPartial(): void {
+    if (this.mesh && this.mesh.nHalfedges > MAX_ARROWS) this.refreshArrows();
+  }
+
+  /** The face to grow the drawn arrows from: the selection's, or the one in the middle of the view. */
+  private focusFace(): number {
+    const mesh = this.mesh!;
+    const s = this.selection;
+    if (s?.kind === 'face') return s.id;
+    if (s?.kind === 'halfedge') return mesh.heFace[s.id] >= 0 ? mesh.heFace[s.id] : mesh.heFace[s.id ^ 1];
+    if (s?.kind === 'edge') return mesh.heFace[2 * s.id] >= 0 ? mesh.heFace[2 * s.id] : mesh.heFace[2 * s.id + 1];
+    if (s?.kind === 'vertex' && mesh.vHalfedge[s.id] >= 0) {
+      const h = mesh.vHalfedge[s.id];
+      return mesh.heFace[h] >= 0 ? mesh.heFace[h] : mesh.heFace[mesh.hePrev[h] ^ 1];
+    }
+    const { width, height } = this.viewer.size();
+    const hit = this.surface.raycast(this.viewer.ray(width / 2, height / 2));
+    if (hit) return hit.face;
+    for (const f of mesh.faces()) return f;
+    return -1;
+  }
+
+  private showProgress(label: string, fraction: number): void {
+    byId('progress').hidden = false;
+    byId('progress-label').textContent = label;
+    byId<HTMLProgressElement>('progress-bar').value = fraction;
+  }
+
+  private hideProgress(): void {
+    byId('progress').hidden = true;
+  }
+
+  private wireControls(): void {
+    const fileInput = byId<HTMLInputElement>('file-input');
+    fileInput.addEventListener('change', async () => {
+      const file = fileInput.files?.[0];
+      if (file) await this.openBytes(new Uint8Array(await file.arrayBuffer()), file.name);
+      fileInput.value = '';
+    });
+    byId<HTMLSelectElement>('sample-select').addEventListener('change', (event) => void this.openSample((event.target as HTMLSelectElement).value));
+    byId<HTMLSelectElement>('pick-filter').addEventListener('change', (event) => (this.filter = (event.target as HTMLSelectElement).value as PickFilter));
+    byId<HTMLSelectElement>('convention').addEventListener('change', (event) => this.setConvention((event.target as HTMLSelectElement).value as Convention));
+    byId('frame-mesh').addEventListener('click', () => this.frameMesh());
+    byId('frame-selection').addEventListener('click', () => this.frameSelection());
+    byId('top-view').addEventListener('click', () => this.toggleTopView());
+    byId('show-ids').addEventListener('click', () => this.toggleIds());
+    byId('walk-back').addEventListener('click', () => this.back());
+    byId('cancel').addEventListener('click', () => void this.cancel());
+
+    // a click picks; a drag orbits
+    const canvas = this.viewer.renderer.domElement;
+    let down: { x: number; y: number } | null = null;
+    canvas.addEventListener('pointerdown', (event) => (down = { x: event.offsetX, y: event.offsetY }));
+    canvas.addEventListener('pointerup', (event) => {
+      if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) this.select(this.pickAt(event.offsetX, event.offsetY));
+      down = null;
+    });
+    let hoverPending = false;
+    canvas.addEventListener('pointermove', (event) => {
+      if (hoverPending || event.buttons !== 0) return;
+      hoverPending = true;
+      requestAnimationFrame(() => {
+        hoverPending = false;
+        this.hover(this.pickAt(event.offsetX, event.offsetY));
+      });
+    });
+    canvas.addEventListener('pointerleave', () => this.hover(null));
+
+    window.addEventListener('keydown', (event) => {
+      const target = event.target as HTMLElement;
+      if (target.closest('input, select, textarea') || event.ctrlKey || event.metaKey || event.altKey) return;
+      const key = event.key.toLowerCase();
+      const move = moveKeys[key];
+      if (move) this.walk(move);
+      else if (event.key === 'Backspace') this.back();
+      else if (event.key === 'Escape') this.select(null);
+      else if (event.key === 'Home') this.frameMesh();
+      else if (key === 'z') this.frameSelection();
+      else if (key === 'o') this.toggleTopView();
+      else if (key === 'i') this.toggleIds();
+      else return;
+      event.preventDefault();
+    });
+  }
+
+  private toggleIds(): void {
+    this.showIds = !this.showIds;
+    byId('show-ids').setAttribute('aria-pressed', String(this.showIds));
+    if (this.showIds && this.mesh && this.mesh.nVertices + this.mesh.nFaces > MAX_ID_LABELS) {
+      this.say(`Ids are labelled on meshes of up to ${MAX_ID_LABELS} vertices and faces; use the tables for this one.`);
+    }
+    this.drawSelection();
+  }
+}
+
+/** The plane's normal when every face lies in one plane (a 2D mesh), else null. */
+export function planarNormal(mesh: HalfedgeMesh): Vector3 | null {
+  let reference: Vector3 | null = null;
+  const n = [0, 0, 0];
+  for (const f of mesh.faces()) {
+    faceNormal(mesh, f, n);
+    if (n[0] === 0 && n[1] === 0 && n[2] === 0) continue;
+    const normal = new Vector3(n[0], n[1], n[2]);
+    if (!reference) reference = normal;
+    else if (Math.abs(reference.dot(normal)) < 0.9999) return null;
+  }
+  if (!reference) return null;
+  // look at the side the faces face
+  return reference;
+}
+
+function idLabels(mesh: HalfedgeMesh): HighlightSpec {
+  const spec = emptyHighlight();
+  for (const v of mesh.vertices()) spec.labels.push({ text: `v${v}`, at: mesh.position(v) as [number, number, number], color: colors.origin });
+  for (const f of mesh.faces()) spec.labels.push({ text: `f${f}`, at: faceCentroid(mesh, f) as [number, number, number], color: colors.face });
+  return spec;
+}

@@ -1,0 +1,109 @@
+/**
+ * `window.halfedgeLab`: the documented automation object for test authors (see
+ * docs/automation.md). Everything a student can do by clicking, without pixel-clicking: open a
+ * mesh, select, walk, step operations, and read the state the page shows.
+ */
+import type { HalfedgeMesh } from '../core/index.js';
+import type { EditRequest, OperationRequest } from '../workers/protocol.js';
+import type { App } from './app.js';
+import { recordOf } from './records.js';
+import { type ElementKind, elementName, type Move, parseElementName, type Selection } from './selection.js';
+import { newPlacement, placeArrow } from './scene/arrow-placement.js';
+
+export function automation(app: App) {
+  const mesh = (): HalfedgeMesh => {
+    if (!app.mesh) throw new Error('no mesh is open yet');
+    return app.mesh;
+  };
+  const asSelection = (element: string | Selection): Selection => {
+    const s = typeof element === 'string' ? parseElementName(element) : element;
+    if (!s) throw new Error(`'${String(element)}' is not an element name like h17, v4, f5 or e8`);
+    return s;
+  };
+  return {
+    /** Resolves once the first mesh is drawn. */
+    ready: app.ready,
+    /** Opens a file from bytes; resolves true when it loaded, false on a parse error (shown on the page). */
+    open: (bytes: Uint8Array | ArrayBuffer | number[], name: string) =>
+      app.openBytes(bytes instanceof Uint8Array ? bytes : new Uint8Array(bytes as ArrayBuffer), name),
+    /** Opens one of the sample models by file name (see `samples()`). */
+    openSample: (file: string) => app.openSample(file),
+    samples: () => app.samples.map((s) => s.file),
+    /** Selects an element: `'h17'`, `{ kind: 'vertex', id: 4 }`, or null to clear. */
+    select: (element: string | Selection | null) => app.select(element === null ? null : asSelection(element)),
+    /** Follows a pointer from the selection: next, prev, twin, face, origin, target, edge, halfedge, twin.next, prev.twin. */
+    walk: (move: Move) => app.walk(move),
+    back: () => app.back(),
+    /** The record of an element as the inspector shows it: `{ next: 'h18', origin: 'v4', … }`. */
+    record: (element: string | Selection) => {
+      const fields: Record<string, string> = {};
+      for (const { field, value } of recordOf(mesh(), asSelection(element), app.convention)) {
+        if (!field) continue;
+        fields[field] = 'element' in value ? elementName(value.element) : value.text;
+      }
+      return fields;
+    },
+    /** Where an element appears on the canvas (CSS pixels from the canvas's top-left), to click it. */
+    screenPosition: (element: string | Selection) => {
+      const s = asSelection(element);
+      const m = mesh();
+      let point: [number, number, number];
+      if (s.kind === 'halfedge') {
+        const placement = placeArrow(m, s.id, newPlacement(), app.scale);
+        point = [0, 1, 2].map((i) => 0.35 * placement.start[i] + 0.65 * placement.end[i]) as [number, number, number];
+      } else if (s.kind === 'vertex') point = m.position(s.id) as [number, number, number];
+      else if (s.kind === 'edge') point = [0, 1, 2].map((i) => (m.position(m.heVertex[2 * s.id])[i] + m.position(m.heVertex[2 * s.id + 1])[i]) / 2) as [number, number, number];
+      else {
+        // the middle of the face's first triangle lies inside the face even when it is not convex
+        const h = m.fHalfedge[s.id];
+        const corners = [m.heVertex[h], m.heVertex[m.heNext[h]], m.heVertex[m.hePrev[h]]].map((v) => m.position(v));
+        point = [0, 1, 2].map((i) => (corners[0][i] + corners[1][i] + corners[2][i]) / 3) as [number, number, number];
+      }
+      const { x, y, visible } = app.viewer.project(point);
+      return { x, y, visible };
+    },
+    /** What a click at canvas point (x, y) would pick. */
+    pickAt: (x: number, y: number, filter?: 'auto' | ElementKind) => {
+      const s = app.pickAt(x, y, filter);
+      return s ? elementName(s) : null;
+    },
+    setConvention: (convention: 'origin' | 'target') => app.setConvention(convention),
+    setPresentation: (on: boolean) => app.setPresentation(on),
+    start: (request: OperationRequest) => app.start(request).then(summary),
+    step: () => app.step().then(summary),
+    runToEnd: () => app.runToEnd().then(summary),
+    cancel: () => app.cancel().then(summary),
+    edit: (request: EditRequest) => app.edit(request).then(summary),
+    undo: () => app.undo().then(summary),
+    redo: () => app.redo().then(summary),
+    jump: (index: number) => app.jump(index).then(summary),
+    /** Everything the page shows, as plain data. */
+    state: () => ({
+      selection: app.selection ? elementName(app.selection) : null,
+      breadcrumb: app.path.map((step) => ({ move: step.move, to: elementName(step.to) })),
+      convention: app.convention,
+      message: app.message,
+      stats: app.snapshot?.stats ?? null,
+      problems: app.snapshot?.problems ?? [],
+      file: app.snapshot?.file ?? null,
+      repairs: app.snapshot?.report?.repairs.map((r) => ({ kind: r.kind, count: r.count })) ?? [],
+      phase: app.snapshot?.phase ? { name: app.snapshot.phase.name, explanation: app.snapshot.phase.explanation } : null,
+      stepping: app.snapshot?.stepping ?? null,
+      history: app.snapshot?.history ?? null,
+      version: app.snapshot?.version ?? 0,
+      frames: app.viewer.frames,
+    }),
+  };
+}
+
+function summary(snapshot: { version: number } | null) {
+  return snapshot ? { version: snapshot.version } : null;
+}
+
+export type HalfedgeLabAutomation = ReturnType<typeof automation>;
+
+declare global {
+  interface Window {
+    halfedgeLab: HalfedgeLabAutomation;
+  }
+}

@@ -1,0 +1,30 @@
+/**
+ * The legend, everywhere the same (Okabe–Ito: readable by colour-blind students and on a
+ * projector). See DESIGN.md.
+ */
+export const colors = {
+  selected: '#E69F00',
+  next: '#56B4E9',
+  prev: '#0072B2',
+  twin: '#D55E00',
+  face: '#009E73',
+  origin: '#CC79A7',
+  boundary: '#8a8a8a',
+  problem: '#D55E00',
+  halfedge: '#4a4a4a',
+  surface: '#dfe3e8',
+  surfaceBack: '#9aa5b1',
+  edge: '#2b2b2b',
+  background: '#f7f7f5',
+} as const;
+
+export type PointerRole = 'selected' | 'next' | 'prev' | 'twin' | 'face' | 'origin';
+
+export const legend: Array<{ role: PointerRole; label: string }> = [
+  { role: 'selected', label: 'selected halfedge' },
+  { role: 'next', label: 'next' },
+  { role: 'prev', label: 'prev' },
+  { role: 'twin', label: 'twin' },
+  { role: 'face', label: 'face' },
+  { role: 'origin', label: 'origin vertex' },
+];

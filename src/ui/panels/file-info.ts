@@ -1,0 +1,61 @@
+/**
+ * What the file said and what the builder had to repair. Each repair lists its incidents; an
+ * incident selects the element concerned, so a student sees *where* the mesh is non-manifold.
+ * All of it is file text or built from it, and goes in as text only.
+ */
+import type { BuildReport } from '../../core/index.js';
+import type { FileInfo } from '../../workers/protocol.js';
+import { el, replace } from '../dom.js';
+import type { Selection } from '../selection.js';
+
+export function renderFileInfo(container: HTMLElement, file: FileInfo | null, report: BuildReport | null, select: (s: Selection) => void): void {
+  if (!file) {
+    replace(container, el('p', { class: 'note' }, 'No file yet.'));
+    return;
+  }
+  const facts = el(
+    'p',
+    {},
+    el('strong', {}, file.name),
+    ` — ${file.format.toUpperCase()} ${file.encoding.replaceAll('_', ' ')}, ${file.counts.vertices} vertices and ${file.counts.faces} faces in the file`,
+  );
+  const list = (title: string, lines: string[]) =>
+    lines.length ? el('details', {}, el('summary', {}, `${title} (${lines.length})`), el('ul', {}, ...lines.map((line) => el('li', {}, line)))) : null;
+  const repairs = report?.repairs.length
+    ? el(
+        'div',
+        { class: 'repairs', 'aria-label': 'Repairs made while building' },
+        el('h3', {}, 'Repairs'),
+        ...report.repairs.map((repair) =>
+          el(
+            'details',
+            { 'data-repair': repair.kind },
+            el('summary', {}, repair.message),
+            el(
+              'ul',
+              {},
+              ...repair.incidents.slice(0, 200).map((incident) => {
+                const target = incidentTarget(incident);
+                return el(
+                  'li',
+                  {},
+                  target
+                    ? el('button', { type: 'button', class: 'link', 'aria-label': `Select: ${incident.message}`, onclick: () => select(target) }, incident.message)
+                    : incident.message,
+                );
+              }),
+              repair.count > 200 ? el('li', {}, `… ${repair.count - 200} more`) : null,
+            ),
+          ),
+        ),
+      )
+    : el('p', { class: 'note' }, 'No repairs were needed: the file holds a clean, oriented, manifold mesh.');
+  replace(container, facts, list('Notes', file.notes), list('Comments in the file', file.comments), repairs);
+}
+
+function incidentTarget(incident: { vertices?: number[]; faces?: number[]; halfedges?: number[] }): Selection | null {
+  if (incident.vertices?.length) return { kind: 'vertex', id: incident.vertices.at(-1)! };
+  if (incident.faces?.length) return { kind: 'face', id: incident.faces.at(-1)! };
+  if (incident.halfedges?.length) return { kind: 'halfedge', id: incident.halfedges[0] };
+  return null;
+}

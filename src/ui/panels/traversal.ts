@@ -1,0 +1,223 @@
+/**
+ * Traversal animations with their code beside them: "halfedges of this face" and "faces around
+ * this vertex" play one step at a time, highlighting the current line of a short `do … while`
+ * loop and the element it is looking at. Play, pause, step, speed.
+ */
+import type { HalfedgeMesh } from '../../core/index.js';
+import { colors } from '../colors.js';
+import { el, replace } from '../dom.js';
+import { emptyHighlight, type HighlightSpec } from '../scene/highlight.js';
+import type { Selection } from '../selection.js';
+
+interface TraversalStep {
+  line: number;
+  /** The halfedge `h` holds at this step. */
+  h: number;
+  /** What has been visited so far. */
+  visited: number[];
+  done: boolean;
+}
+
+export interface Traversal {
+  title: string;
+  code: string[];
+  /** Builds the steps from the selection, or says why it cannot start. */
+  steps(mesh: HalfedgeMesh, selection: Selection): TraversalStep[] | string;
+  /** Kind of element `visit` collects. */
+  visits: 'halfedge' | 'face';
+}
+
+const faceLoop: Traversal = {
+  title: 'Halfedges of this face',
+  visits: 'halfedge',
+  code: [
+    'const start = mesh.faceHalfedge(f);',
+    'let h = start;',
+    'do {',
+    '  visit(h);',
+    '  h = mesh.next(h);',
+    '} while (h !== start);',
+  ],
+  steps(mesh, selection) {
+    const f = selection.kind === 'face' ? selection.id : selection.kind === 'halfedge' ? mesh.heFace[selection.id] : -1;
+    if (f < 0) return 'select a face (or a halfedge of one) first';
+    const start = mesh.fHalfedge[f];
+    return loopSteps(start, (h) => mesh.heNext[h], (h) => h, mesh.halfedgeSlots);
+  },
+};
+
+const vertexFan: Traversal = {
+  title: 'Faces around this vertex',
+  visits: 'face',
+  code: [
+    'const start = mesh.vertexHalfedge(v);',
+    'let h = start;',
+    'do {',
+    '  visit(mesh.face(h)); // -1: the hole beside a boundary vertex',
+    '  h = mesh.twin(mesh.prev(h)); // counter-clockwise',
+    '} while (h !== start);',
+  ],
+  steps(mesh, selection) {
+    const v = selection.kind === 'vertex' ? selection.id : selection.kind === 'halfedge' ? mesh.heVertex[selection.id] : -1;
+    if (v < 0) return 'select a vertex (or a halfedge leaving one) first';
+    const start = mesh.vHalfedge[v];
+    if (start < 0) return `v${v} is isolated: no faces around it`;
+    return loopSteps(start, (h) => mesh.hePrev[h] ^ 1, (h) => mesh.heFace[h], mesh.halfedgeSlots);
+  },
+};
+
+export const traversals = [faceLoop, vertexFan];
+
+/** The steps of `let h = start; do { visit(h); h = advance(h); } while (h !== start)`. */
+function loopSteps(start: number, advance: (h: number) => number, visit: (h: number) => number, limit: number): TraversalStep[] {
+  const steps: TraversalStep[] = [];
+  const visited: number[] = [];
+  steps.push({ line: 0, h: start, visited: [], done: false }, { line: 1, h: start, visited: [], done: false });
+  let h = start;
+  for (let i = 0; i <= limit; i++) {
+    steps.push({ line: 2, h, visited: [...visited], done: false });
+    visited.push(visit(h));
+    steps.push({ line: 3, h, visited: [...visited], done: false });
+    h = advance(h);
+    steps.push({ line: 4, h, visited: [...visited], done: false });
+    steps.push({ line: 5, h, visited: [...visited], done: h === start });
+    if (h === start) break;
+  }
+  return steps;
+}
+
+/** What to light up at a step: the halfedge `h` and everything visited so far. */
+export function traversalHighlight(traversal: Traversal, step: TraversalStep): HighlightSpec {
+  const spec = emptyHighlight();
+  for (const id of step.visited) {
+    if (traversal.visits === 'face' && id >= 0) spec.faces.push({ id, color: colors.face });
+    if (traversal.visits === 'halfedge') spec.halfedges.push({ id, color: colors.next });
+  }
+  spec.halfedges.push({ id: step.h, color: colors.selected });
+  return spec;
+}
+
+export class TraversalPanel {
+  private traversal: Traversal | null = null;
+  private steps: TraversalStep[] = [];
+  private index = 0;
+  private timer: ReturnType<typeof setInterval> | null = null;
+  private speed = 2; // steps per second
+  private readonly code = el('pre', { class: 'code', 'aria-label': 'Traversal code' });
+  private readonly message = el('p', { class: 'note', role: 'status' });
+  private readonly playButton = el('button', { type: 'button', 'aria-label': 'Play traversal', onclick: () => this.toggle() }, 'Play');
+
+  constructor(
+    container: HTMLElement,
+    private readonly context: () => { mesh: HalfedgeMesh | null; selection: Selection | null },
+    private readonly show: (spec: HighlightSpec | null) => void,
+  ) {
+    const choose = el(
+      'div',
+      { class: 'traversal-choice' },
+      ...traversals.map((t, i) =>
+        el('button', { type: 'button', 'data-traversal': String(i), 'aria-label': `Start traversal: ${t.title}`, onclick: () => this.begin(t) }, t.title),
+      ),
+    );
+    const controls = el(
+      'div',
+      { class: 'traversal-controls' },
+      this.playButton,
+      el('button', { type: 'button', 'aria-label': 'Step traversal', onclick: () => this.advance() }, 'Step'),
+      el('button', { type: 'button', 'aria-label': 'Stop traversal', onclick: () => this.stop() }, 'Stop'),
+      el(
+        'label',
+        {},
+        'Speed ',
+        el('input', {
+          type: 'range',
+          min: '0.5',
+          max: '8',
+          step: '0.5',
+          value: String(this.speed),
+          'aria-label': 'Traversal speed (steps per second)',
+          oninput: (event: Event) => {
+            this.speed = Number((event.target as HTMLInputElement).value);
+            if (this.timer) this.play();
+          },
+        }),
+      ),
+    );
+    replace(container, choose, this.code, controls, this.message);
+  }
+
+  /** Starts `traversal` at the current selection. */
+  begin(traversal: Traversal): void {
+    this.pause();
+    const { mesh, selection } = this.context();
+    if (!mesh || !selection) {
+      this.message.textContent = 'Select an element first.';
+      return;
+    }
+    const steps = traversal.steps(mesh, selection);
+    if (typeof steps === 'string') {
+      this.message.textContent = steps;
+      return;
+    }
+    this.traversal = traversal;
+    this.steps = steps;
+    this.index = 0;
+    this.render();
+  }
+
+  advance(): void {
+    if (!this.traversal) return;
+    if (this.index + 1 < this.steps.length) this.index++;
+    else this.pause();
+    this.render();
+  }
+
+  toggle(): void {
+    if (this.timer) this.pause();
+    else this.play();
+  }
+
+  play(): void {
+    if (!this.traversal) this.begin(traversals[0]);
+    if (!this.traversal) return;
+    if (this.timer) clearInterval(this.timer);
+    this.timer = setInterval(() => this.advance(), 1000 / this.speed);
+    this.playButton.textContent = 'Pause';
+    this.playButton.setAttribute('aria-label', 'Pause traversal');
+  }
+
+  pause(): void {
+    if (this.timer) clearInterval(this.timer);
+    this.timer = null;
+    this.playButton.textContent = 'Play';
+    this.playButton.setAttribute('aria-label', 'Play traversal');
+  }
+
+  stop(): void {
+    this.pause();
+    this.traversal = null;
+    this.steps = [];
+    this.code.replaceChildren();
+    this.message.textContent = '';
+    this.show(null);
+  }
+
+  /** Current state, for the automation API. */
+  state(): { title: string; line: number; h: number; visited: number[]; done: boolean } | null {
+    const step = this.steps[this.index];
+    return this.traversal && step ? { title: this.traversal.title, ...step } : null;
+  }
+
+  private render(): void {
+    const traversal = this.traversal;
+    const step = this.steps[this.index];
+    if (!traversal || !step) return;
+    replace(
+      this.code,
+      ...traversal.code.map((line, i) => el('span', { class: i === step.line ? 'line current' : 'line', 'data-line': String(i) }, line, '\n')),
+    );
+    const seen = step.visited.map((id) => (id < 0 ? 'hole' : `${traversal.visits === 'face' ? 'f' : 'h'}${id}`));
+    this.message.textContent = `h = h${step.h}; visited: ${seen.join(', ') || 'nothing yet'}${step.done ? ' — back at the start: done' : ''}`;
+    this.show(traversalHighlight(traversal, step));
+  }
+}

@@ -1,0 +1,186 @@
+/**
+ * What the selection (or the hover) lights up, drawn over the mesh: arrows in the legend's
+ * colours, a tint over faces, dots on vertices, and labels ("h17", "next h18") in large type.
+ */
+import {
+  BufferGeometry,
+  CanvasTexture,
+  Color,
+  DoubleSide,
+  Float32BufferAttribute,
+  Group,
+  InstancedMesh,
+  LineBasicMaterial,
+  LineSegments,
+  Matrix4,
+  Mesh,
+  MeshBasicMaterial,
+  Points,
+  PointsMaterial,
+} from 'three';
+import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
+import type { HalfedgeMesh } from '../../core/index.js';
+import { newPlacement, placeArrow } from './arrow-placement.js';
+import { arrowMatrix, arrowShape } from './arrows.js';
+
+export interface HighlightSpec {
+  halfedges: Array<{ id: number; color: string }>;
+  faces: Array<{ id: number; color: string }>;
+  vertices: Array<{ id: number; color: string }>;
+  edges: Array<{ id: number; color: string }>;
+  labels: Array<{ text: string; at: [number, number, number]; color: string }>;
+}
+
+export function emptyHighlight(): HighlightSpec {
+  return { halfedges: [], faces: [], vertices: [], edges: [], labels: [] };
+}
+
+const shape = arrowShape(1);
+
+export class HighlightLayer {
+  readonly group = new Group();
+  private readonly dotTexture = roundDot();
+
+  /** `opacity` < 1 for the hover preview; `widthScale` makes the highlighted arrows stand out. */
+  constructor(
+    private readonly opacity = 1,
+    private readonly widthScale = 2,
+  ) {}
+
+  show(mesh: HalfedgeMesh, spec: HighlightSpec, scale: number): void {
+    this.clear();
+    const transparent = this.opacity < 1;
+    if (spec.faces.length) this.group.add(this.faceTint(mesh, spec.faces));
+    if (spec.halfedges.length) {
+      const arrows = new InstancedMesh(
+        shape,
+        new MeshBasicMaterial({
+          side: DoubleSide,
+          transparent,
+          opacity: this.opacity,
+          polygonOffset: true,
+          polygonOffsetFactor: -1,
+          polygonOffsetUnits: -4,
+        }),
+        spec.halfedges.length,
+      );
+      const placement = newPlacement();
+      const matrix = new Matrix4();
+      spec.halfedges.forEach(({ id, color }, i) => {
+        arrowMatrix(placeArrow(mesh, id, placement, scale), matrix, this.widthScale);
+        arrows.setMatrixAt(i, matrix);
+        arrows.setColorAt(i, new Color(color));
+      });
+      arrows.renderOrder = 2;
+      arrows.raycast = () => {};
+      this.group.add(arrows);
+    }
+    if (spec.edges.length) {
+      const points: number[] = [];
+      const lineColors: number[] = [];
+      for (const { id, color } of spec.edges) {
+        const c = new Color(color);
+        for (const v of [mesh.heVertex[2 * id], mesh.heVertex[2 * id + 1]]) {
+          points.push(...mesh.position(v));
+          lineColors.push(c.r, c.g, c.b);
+        }
+      }
+      this.group.add(withNoRaycast(new LineSegments(geometry(points, lineColors), new LineBasicMaterial({ vertexColors: true, transparent, opacity: this.opacity }))));
+    }
+    if (spec.vertices.length) {
+      const points: number[] = [];
+      const dotColors: number[] = [];
+      for (const { id, color } of spec.vertices) {
+        const c = new Color(color);
+        points.push(...mesh.position(id));
+        dotColors.push(c.r, c.g, c.b);
+      }
+      const dots = new Points(
+        geometry(points, dotColors),
+        new PointsMaterial({ size: 18 * scale, sizeAttenuation: false, vertexColors: true, map: this.dotTexture, alphaTest: 0.5, transparent, opacity: this.opacity }),
+      );
+      dots.renderOrder = 3;
+      this.group.add(withNoRaycast(dots));
+    }
+    for (const { text, at, color } of spec.labels) {
+      // the anchor is what the label renderer positions; the tag inside may be nudged off others
+      const anchor = document.createElement('div');
+      const tag = document.createElement('span');
+      tag.className = 'label';
+      tag.textContent = text; // text, never HTML
+      tag.style.borderColor = color;
+      anchor.append(tag);
+      const label = new CSS2DObject(anchor);
+      label.position.set(...at);
+      this.group.add(label);
+    }
+  }
+
+  clear(): void {
+    for (const child of [...this.group.children]) {
+      if (child instanceof CSS2DObject) child.element.remove();
+      if ('geometry' in child && child.geometry instanceof BufferGeometry && child.geometry !== shape) child.geometry.dispose();
+      this.group.remove(child);
+    }
+  }
+
+  private faceTint(mesh: HalfedgeMesh, faces: HighlightSpec['faces']): Mesh {
+    const points: number[] = [];
+    const tint: number[] = [];
+    for (const { id, color } of faces) {
+      const c = new Color(color);
+      const loop: number[] = [];
+      const start = mesh.fHalfedge[id];
+      let h = start;
+      do {
+        loop.push(mesh.heVertex[h]);
+        h = mesh.heNext[h];
+      } while (h !== start);
+      // a fan is enough for a tint, even on a non-convex face it only overdraws
+      for (let i = 1; i + 1 < loop.length; i++) {
+        for (const v of [loop[0], loop[i], loop[i + 1]]) {
+          points.push(...mesh.position(v));
+          tint.push(c.r, c.g, c.b);
+        }
+      }
+    }
+    const material = new MeshBasicMaterial({
+      vertexColors: true,
+      side: DoubleSide,
+      transparent: true,
+      opacity: 0.5 * this.opacity,
+      depthWrite: false,
+      polygonOffset: true,
+      polygonOffsetFactor: 0.5,
+      polygonOffsetUnits: 1,
+    });
+    return withNoRaycast(new Mesh(geometry(points, tint), material));
+  }
+}
+
+function geometry(points: number[], pointColors: number[]): BufferGeometry {
+  const g = new BufferGeometry();
+  g.setAttribute('position', new Float32BufferAttribute(points, 3));
+  g.setAttribute('color', new Float32BufferAttribute(pointColors, 3));
+  return g;
+}
+
+function withNoRaycast<T extends Mesh | Points | LineSegments>(object: T): T {
+  object.raycast = () => {};
+  return object;
+}
+
+/** A round dot for vertex markers (points are squares otherwise). */
+function roundDot(): CanvasTexture {
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = 64;
+  const g = canvas.getContext('2d')!;
+  g.fillStyle = '#fff';
+  g.beginPath();
+  g.arc(32, 32, 28, 0, 2 * Math.PI);
+  g.fill();
+  g.strokeStyle = '#000';
+  g.lineWidth = 5;
+  g.stroke();
+  return new CanvasTexture(canvas);
+}

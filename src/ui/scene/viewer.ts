@@ -1,0 +1,210 @@
+/**
+ * The three.js stage: renderer, lights, a perspective camera for 3D and an orthographic one for
+ * the top view of planar meshes, orbit controls, and a label layer (HTML text placed in 3D).
+ * It draws only when something changed, so an idle page costs nothing.
+ */
+import {
+  AmbientLight,
+  Box3,
+  Color,
+  DirectionalLight,
+  type Object3D,
+  OrthographicCamera,
+  PerspectiveCamera,
+  Raycaster,
+  Scene,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+} from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
+import { colors } from '../colors.js';
+
+export type ViewMode = 'perspective' | 'top';
+
+export class Viewer {
+  readonly renderer: WebGLRenderer;
+  readonly labels: CSS2DRenderer;
+  readonly scene = new Scene();
+  readonly perspective = new PerspectiveCamera(40, 1, 0.01, 1000);
+  readonly orthographic = new OrthographicCamera(-1, 1, 1, -1, 0.01, 1000);
+  readonly controls: OrbitControls;
+  mode: ViewMode = 'perspective';
+  /** Frames drawn so far (tests watch it move while the worker works). */
+  frames = 0;
+  private needsRender = true;
+  private readonly light = new DirectionalLight(0xffffff, 1.6);
+
+  constructor(readonly container: HTMLElement) {
+    this.renderer = new WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.domElement.setAttribute('aria-label', '3D view of the mesh');
+    this.renderer.domElement.setAttribute('role', 'img');
+    container.append(this.renderer.domElement);
+    this.labels = new CSS2DRenderer();
+    this.labels.domElement.className = 'labels';
+    container.append(this.labels.domElement);
+
+    this.scene.background = new Color(colors.background);
+    this.scene.add(new AmbientLight(0xffffff, 1.1), this.light);
+    this.controls = new OrbitControls(this.perspective, this.renderer.domElement);
+    this.controls.enableDamping = false;
+    this.controls.addEventListener('change', () => this.requestRender());
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+    const loop = () => {
+      this.frames++;
+      if (this.needsRender) {
+        this.needsRender = false;
+        this.draw();
+      }
+      requestAnimationFrame(loop);
+    };
+    requestAnimationFrame(loop);
+  }
+
+  get camera(): PerspectiveCamera | OrthographicCamera {
+    return this.mode === 'top' ? this.orthographic : this.perspective;
+  }
+
+  requestRender(): void {
+    this.needsRender = true;
+  }
+
+  add(...objects: Object3D[]): void {
+    this.scene.add(...objects);
+    this.requestRender();
+  }
+
+  /**
+   * Points the camera at `box`. In the top view the orthographic camera looks down `normal`
+   * (the plane of a planar mesh), like the figures in a textbook.
+   */
+  frame(box: Box3, normal: Vector3 = new Vector3(0, 0, 1), sphereRadius?: number): void {
+    if (box.isEmpty()) return;
+    const centre = box.getCenter(new Vector3());
+    // the box's half-diagonal bounds the points, but a sphere around the points is often tighter
+    const radius = Math.max(sphereRadius ?? box.getSize(new Vector3()).length() / 2, 1e-6);
+    const camera = this.camera;
+    if (camera instanceof OrthographicCamera) {
+      const up = Math.abs(normal.y) > 0.9 ? new Vector3(0, 0, -1) : new Vector3(0, 1, 0);
+      camera.up.copy(up);
+      camera.position.copy(centre).addScaledVector(normal, 4 * radius);
+      // fit the box's extent across and up the screen, not its diagonal
+      const right = new Vector3().crossVectors(up, normal).normalize();
+      const screenUp = new Vector3().crossVectors(normal, right).normalize();
+      let across = 0;
+      let upward = 0;
+      for (const corner of boxCorners(box)) {
+        const offset = corner.sub(centre);
+        across = Math.max(across, Math.abs(offset.dot(right)));
+        upward = Math.max(upward, Math.abs(offset.dot(screenUp)));
+      }
+      const aspect = this.aspect();
+      const half = Math.max(upward, across / aspect, 1e-6) * 1.12;
+      Object.assign(camera, { left: -half * aspect, right: half * aspect, top: half, bottom: -half, near: 0.01 * radius, far: 10 * radius, zoom: 1 });
+      camera.updateProjectionMatrix();
+    } else {
+      const direction = camera.position.clone().sub(this.controls.target);
+      // a three-quarter view from the front, y up (three.js's and most scanners' convention)
+      if (direction.lengthSq() === 0 || !Number.isFinite(direction.lengthSq())) direction.set(0.55, 0.45, 1);
+      direction.normalize();
+      const distance = radius / Math.sin((camera.fov * Math.PI) / 360);
+      camera.position.copy(centre).addScaledVector(direction, distance * 1.05);
+      camera.near = distance / 1000;
+      camera.far = distance * 100;
+      camera.updateProjectionMatrix();
+    }
+    this.controls.target.copy(centre);
+    this.controls.update();
+    this.requestRender();
+  }
+
+  setMode(mode: ViewMode): void {
+    this.mode = mode;
+    this.controls.object = this.camera;
+    this.controls.enableRotate = mode === 'perspective';
+    this.resize();
+  }
+
+  /** A ray through a point of the canvas (CSS pixels relative to it). */
+  ray(x: number, y: number): Raycaster {
+    const { width, height } = this.size();
+    const raycaster = new Raycaster();
+    raycaster.setFromCamera(new Vector2((x / width) * 2 - 1, -(y / height) * 2 + 1), this.camera);
+    return raycaster;
+  }
+
+  /** Where a point in space appears on the canvas (CSS pixels), and whether it is in front. */
+  project(point: Vector3 | [number, number, number]): { x: number; y: number; visible: boolean } {
+    const v = Array.isArray(point) ? new Vector3(...point) : point.clone();
+    v.project(this.camera);
+    const { width, height } = this.size();
+    return { x: ((v.x + 1) / 2) * width, y: ((1 - v.y) / 2) * height, visible: v.z > -1 && v.z < 1 };
+  }
+
+  size(): { width: number; height: number } {
+    return { width: this.container.clientWidth || 1, height: this.container.clientHeight || 1 };
+  }
+
+  private aspect(): number {
+    const { width, height } = this.size();
+    return width / height;
+  }
+
+  private resize(): void {
+    const { width, height } = this.size();
+    this.renderer.setSize(width, height, false);
+    this.renderer.domElement.style.width = `${width}px`;
+    this.renderer.domElement.style.height = `${height}px`;
+    this.labels.setSize(width, height);
+    this.perspective.aspect = width / height;
+    this.perspective.updateProjectionMatrix();
+    const o = this.orthographic;
+    const half = (o.top - o.bottom) / 2;
+    o.left = -half * (width / height);
+    o.right = half * (width / height);
+    o.updateProjectionMatrix();
+    this.requestRender();
+  }
+
+  private draw(): void {
+    // the light follows the camera, so the side facing the student is always lit
+    this.light.position.copy(this.camera.position);
+    this.renderer.render(this.scene, this.camera);
+    this.labels.render(this.scene, this.camera);
+    spreadLabels(this.labels.domElement);
+  }
+}
+
+function boxCorners(box: Box3): Vector3[] {
+  const { min, max } = box;
+  const corners: Vector3[] = [];
+  for (const x of [min.x, max.x]) for (const y of [min.y, max.y]) for (const z of [min.z, max.z]) corners.push(new Vector3(x, y, z));
+  return corners;
+}
+
+/** Above this many labels (every id shown), overlaps are left alone. */
+const MAX_SPREAD_LABELS = 40;
+
+/** Nudges labels down until none overlaps another, so a small face's pointers stay readable. */
+function spreadLabels(root: HTMLElement): void {
+  const tags = [...root.querySelectorAll<HTMLElement>('.label')];
+  if (tags.length > MAX_SPREAD_LABELS) return;
+  for (const tag of tags) tag.style.transform = '';
+  const placed: DOMRect[] = [];
+  for (const tag of tags) {
+    let rect = tag.getBoundingClientRect();
+    let shift = 0;
+    for (let tries = 0; tries < tags.length; tries++) {
+      const clash = placed.find((r) => r.left < rect.right && rect.left < r.right && r.top < rect.bottom && rect.top < r.bottom);
+      if (!clash) break;
+      const step = clash.bottom - rect.top + 2;
+      shift += step;
+      rect = new DOMRect(rect.x, rect.y + step, rect.width, rect.height);
+    }
+    if (shift) tag.style.transform = `translateY(${shift}px)`;
+    placed.push(rect);
+  }
+}

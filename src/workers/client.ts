@@ -1,0 +1,191 @@
+/**
+ * The page's side of the session: a typed client that talks to the session worker, loads files
+ * in a throw-away loader worker, and survives the session worker dying.
+ *
+ *   - `open` parses and builds in a separate loader worker, so cancelling a huge file is
+ *     `terminate()` and the session (current mesh and history) is never touched;
+ *   - every snapshot's mesh is remembered, so if the session worker dies (out of memory, say), a
+ *     fresh one is started with the last good mesh and `onRestart` tells the page.
+ *
+ * @example
+ *   const client = new SessionClient();
+ *   client.onProgress = ({ label, fraction }) => bar.update(label, fraction);
+ *   const snapshot = await client.open(new Uint8Array(await file.arrayBuffer()), file.name);
+ */
+import { proxy, type Remote, transfer, wrap } from 'comlink';
+import type { SerializedMesh } from '../core/index.js';
+import {
+  type EditRequest,
+  installErrorTransfer,
+  type LoaderApi,
+  type OperationRequest,
+  type ProgressEvent,
+  type SessionApi,
+  type Snapshot,
+  transferables,
+} from './protocol.js';
+
+installErrorTransfer();
+
+export interface SessionClientOptions {
+  /** Defaults to the package's own session worker. */
+  createSessionWorker?: () => Worker;
+  /** Defaults to the package's own loader worker. */
+  createLoaderWorker?: () => Worker;
+}
+
+/** A load or operation stopped by `cancel()`. */
+export class CancelledError extends Error {
+  override readonly name = 'CancelledError';
+}
+
+/** The worker stopped (usually: it ran out of memory). */
+export class WorkerStoppedError extends Error {
+  override readonly name = 'WorkerStoppedError';
+}
+
+interface LiveWorker<T> {
+  worker: Worker;
+  remote: Remote<T>;
+  /** Rejects when the worker stops (or is stopped). */
+  stopped: Promise<never>;
+  stop: (error: Error) => void;
+}
+
+export class SessionClient {
+  onProgress: ((event: ProgressEvent) => void) | null = null;
+  /** Called after the session worker died and was restarted with `snapshot`. */
+  onRestart: ((message: string, snapshot: Snapshot | null) => void) | null = null;
+
+  private session: LiveWorker<SessionApi>;
+  private loader: LiveWorker<LoaderApi> | null = null;
+  private lastMesh: SerializedMesh | null = null;
+  private readonly createSessionWorker: () => Worker;
+  private readonly createLoaderWorker: () => Worker;
+
+  constructor(options: SessionClientOptions = {}) {
+    this.createSessionWorker =
+      options.createSessionWorker ?? (() => new Worker(new URL('./session.worker.js', import.meta.url), { type: 'module' }));
+    this.createLoaderWorker =
+      options.createLoaderWorker ?? (() => new Worker(new URL('./loader.worker.js', import.meta.url), { type: 'module' }));
+    this.session = this.startSession();
+  }
+
+  /**
+   * Parses and builds a file off the session, then makes it the current mesh. `bytes` is
+   * transferred (it is empty afterwards). A parse error leaves the session as it was.
+   */
+  async open(bytes: Uint8Array, name: string): Promise<Snapshot> {
+    this.stopLoading(new CancelledError(`opening ${name} replaced an earlier load`));
+    const loader = (this.loader = live<LoaderApi>(this.createLoaderWorker(), () =>
+      new WorkerStoppedError(`the loader stopped while reading ${name} (is the file larger than this browser can hold?)`),
+    ));
+    try {
+      const progress = proxy((event: ProgressEvent) => this.onProgress?.(event));
+      const loaded = await Promise.race([loader.remote.load(transfer(bytes, [bytes.buffer as ArrayBuffer]), name, progress), loader.stopped]);
+      return await this.call((session) => session.adopt(transfer(loaded, transferables(loaded))));
+    } finally {
+      if (this.loader === loader) this.loader = null;
+      loader.worker.terminate();
+    }
+  }
+
+  /** Stops a load in progress, or the operation being stepped or run. */
+  async cancel(): Promise<Snapshot | null> {
+    if (this.loader) {
+      this.stopLoading(new CancelledError('loading cancelled'));
+      return null;
+    }
+    return this.call((session) => session.cancel());
+  }
+
+  snapshot(): Promise<Snapshot> {
+    return this.call((session) => session.snapshot());
+  }
+  start(request: OperationRequest): Promise<Snapshot> {
+    return this.call((session) => session.start(request));
+  }
+  step(): Promise<Snapshot> {
+    return this.call((session) => session.step());
+  }
+  runToEnd(): Promise<Snapshot> {
+    return this.call((session) => session.runToEnd());
+  }
+  edit(request: EditRequest): Promise<Snapshot> {
+    return this.call((session) => session.edit(request));
+  }
+  undo(): Promise<Snapshot> {
+    return this.call((session) => session.undo());
+  }
+  redo(): Promise<Snapshot> {
+    return this.call((session) => session.redo());
+  }
+  jump(index: number): Promise<Snapshot> {
+    return this.call((session) => session.jump(index));
+  }
+  exportMesh(format: string): Promise<Uint8Array> {
+    return Promise.race([this.session.remote.exportMesh(format), this.session.stopped]);
+  }
+  /** Puts back a mesh (e.g. the page's own copy) as a new history entry. */
+  restore(mesh: SerializedMesh, label: string): Promise<Snapshot> {
+    return this.call((session) => session.restore(mesh, label));
+  }
+
+  /** Stops the session worker as if it had crashed (for tests of the recovery). */
+  simulateCrash(): void {
+    this.session.stop(new WorkerStoppedError('the worker was stopped'));
+  }
+
+  dispose(): void {
+    this.stopLoading(new CancelledError('the session was closed'));
+    this.session.worker.terminate();
+  }
+
+  private async call(method: (session: Remote<SessionApi>) => Promise<Snapshot>): Promise<Snapshot> {
+    const { remote, stopped } = this.session;
+    const snapshot = await Promise.race([method(remote), stopped]);
+    this.lastMesh = snapshot.mesh;
+    return snapshot;
+  }
+
+  private startSession(): LiveWorker<SessionApi> {
+    const session = live<SessionApi>(this.createSessionWorker(), () =>
+      new WorkerStoppedError('the editing worker stopped (most likely it ran out of memory)'),
+    );
+    session.stopped.catch((error: Error) => {
+      session.worker.terminate();
+      if (this.session === session) void this.recover(error.message);
+    });
+    void session.remote.setProgressListener(proxy((event: ProgressEvent) => this.onProgress?.(event)));
+    return session;
+  }
+
+  /** A fresh session worker, given the last mesh the page saw. */
+  private async recover(reason: string): Promise<void> {
+    this.session = this.startSession();
+    const mesh = this.lastMesh;
+    // sent as a copy: the page keeps drawing from its own arrays
+    const snapshot = mesh ? await this.call((session) => session.restore(mesh, 'restored after a restart')) : null;
+    this.onRestart?.(`${reason}; restarted${snapshot ? ' with the last good mesh' : ''}`, snapshot);
+  }
+
+  private stopLoading(error: Error): void {
+    if (!this.loader) return;
+    this.loader.stop(error);
+    this.loader.worker.terminate();
+    this.loader = null;
+  }
+}
+
+function live<T>(worker: Worker, stoppedError: () => Error): LiveWorker<T> {
+  let stop!: (error: Error) => void;
+  const stopped = new Promise<never>((_, reject) => {
+    stop = reject;
+  });
+  stopped.catch(() => {}); // callers race against it; an unobserved rejection is not an error here
+  worker.addEventListener('error', (event) => {
+    event.preventDefault();
+    stop(stoppedError());
+  });
+  return { worker, remote: wrap<T>(worker), stopped, stop };
+}

@@ -1,0 +1,40 @@
+/** Parse and build one file: the work of the loader worker (and of tests, without a worker). */
+import { buildMesh, serializeMesh } from '../core/index.js';
+import { readMesh } from '../core/io/index.js';
+import type { LoadedFile, ProgressListener } from './protocol.js';
+
+/** Parsing is most of the work; building the rest. */
+const READ_SHARE = 0.6;
+
+export function loadFile(bytes: Uint8Array, name: string, onProgress?: ProgressListener): LoadedFile {
+  const file = readMesh(bytes, {
+    fileName: name,
+    onProgress: (fraction) => onProgress?.({ label: `reading ${name}`, fraction: READ_SHARE * fraction }),
+  });
+  const { mesh, report } = buildMesh(file.soup, {
+    onProgress: (fraction) => onProgress?.({ label: 'building the halfedges', fraction: READ_SHARE + (1 - READ_SHARE) * fraction }),
+  });
+  return {
+    mesh: serializeMesh(mesh),
+    report,
+    file: {
+      name,
+      format: file.format,
+      encoding: file.encoding,
+      counts: file.counts,
+      comments: file.comments,
+      notes: file.notes,
+    },
+  };
+}
+
+/** Passes on at most one call per `intervalMs` (and always the last, fraction 1). */
+export function throttle(listener: ProgressListener, intervalMs = 50): ProgressListener {
+  let last = -Infinity;
+  return (event) => {
+    const now = performance.now();
+    if (now - last < intervalMs && event.fraction < 1) return;
+    last = now;
+    listener(event);
+  };
+}

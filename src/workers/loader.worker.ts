@@ -1,0 +1,15 @@
+/** The loader worker: parses and builds one file off the session, so cancel can terminate it. */
+import { expose, transfer } from 'comlink';
+import { loadFile, throttle } from './load.js';
+import { installErrorTransfer, type LoaderApi, transferables } from './protocol.js';
+
+installErrorTransfer();
+
+const loader: LoaderApi = {
+  async load(bytes, name, onProgress) {
+    const loaded = loadFile(bytes, name, throttle(onProgress));
+    return transfer(loaded, transferables(loaded));
+  },
+};
+
+expose(loader);

@@ -1,0 +1,140 @@
+/**
+ * What the session can be asked to do: the stepped operations (subdivision, the plane cut) and
+ * the local edits, as plain requests that cross the worker boundary, each with the sentence that
+ * says why it does not apply (so the page can disable a button with that sentence as its tooltip).
+ */
+import {
+  canCollapseEdge,
+  canFlipEdge,
+  canMergeFaces,
+  canPokeFace,
+  canSplitEdge,
+  canSplitEdgeTriangulated,
+  canSplitFace,
+  canTriangulateFace,
+  collapseEdge,
+  type EditResult,
+  flipEdge,
+  mergeFaces,
+  pokeFace,
+  splitEdge,
+  splitEdgeTriangulated,
+  splitFace,
+  triangulateFace,
+  triangulateMesh,
+} from '../core/edits/index.js';
+import { type KeepSide, planeCut } from '../core/cut/index.js';
+import { type HalfedgeMesh, type Operation, TopologyError } from '../core/index.js';
+import { cannotSubdivide, type SubdivisionScheme, subdivisionOperation } from '../core/subdivision/index.js';
+
+export type OperationRequest =
+  | { kind: 'subdivide'; scheme: SubdivisionScheme }
+  | { kind: 'cut'; plane: [number, number, number, number]; keep?: KeepSide; cap?: boolean };
+
+export type EditRequest =
+  | { kind: 'flip-edge'; edge: number }
+  | { kind: 'split-edge'; edge: number; triangulate?: boolean }
+  | { kind: 'collapse-edge'; edge: number }
+  | { kind: 'split-face'; face: number; from: number; to: number }
+  | { kind: 'poke-face'; face: number }
+  | { kind: 'erase-edge'; edge: number }
+  | { kind: 'triangulate-face'; face: number }
+  | { kind: 'triangulate-mesh' };
+
+const schemeNames: Record<SubdivisionScheme, string> = {
+  loop: 'Loop subdivision',
+  'catmull-clark': 'Catmull-Clark subdivision',
+  butterfly: 'Modified Butterfly subdivision',
+  sqrt3: '√3 subdivision',
+};
+
+/** Phases each operation announces, where the number is fixed. */
+const schemePhases: Record<SubdivisionScheme, number | null> = { loop: 4, 'catmull-clark': 4, butterfly: 3, sqrt3: null };
+const CUT_PHASES = 6;
+
+export function operationLabel(request: OperationRequest): string {
+  switch (request.kind) {
+    case 'subdivide':
+      return schemeNames[request.scheme] ?? `subdivide (${String(request.scheme)})`;
+    case 'cut': {
+      const [a, b, c, d] = request.plane.map((x) => +x.toFixed(4));
+      return `plane cut ${a}x + ${b}y + ${c}z + ${d} = 0`;
+    }
+  }
+}
+
+/** Null when the operation applies to `mesh`, else the sentence saying why not. */
+export function cannotStart(mesh: HalfedgeMesh, request: OperationRequest): string | null {
+  switch (request.kind) {
+    case 'subdivide':
+      return cannotSubdivide(mesh, request.scheme);
+    case 'cut':
+      return mesh.nFaces === 0 ? 'there are no faces to cut' : null;
+  }
+}
+
+/**
+ * The operation, ready to step, on `mesh` (which it will change).
+ * @throws TopologyError with the `cannotStart` sentence when it does not apply.
+ */
+export function startOperation(mesh: HalfedgeMesh, request: OperationRequest): { operation: Operation; phases: number | null } {
+  const reason = cannotStart(mesh, request);
+  if (reason) throw new TopologyError(reason);
+  switch (request.kind) {
+    case 'subdivide':
+      return { operation: subdivisionOperation(mesh, request.scheme), phases: schemePhases[request.scheme] };
+    case 'cut':
+      return { operation: planeCut(mesh, request.plane, { keep: request.keep, cap: request.cap }), phases: CUT_PHASES };
+  }
+}
+
+/** Null when the edit applies, else the sentence saying why not. */
+export function cannotEdit(mesh: HalfedgeMesh, request: EditRequest): string | null {
+  switch (request.kind) {
+    case 'flip-edge':
+      return canFlipEdge(mesh, request.edge);
+    case 'split-edge':
+      return request.triangulate ? canSplitEdgeTriangulated(mesh, request.edge) : canSplitEdge(mesh, request.edge);
+    case 'collapse-edge':
+      return canCollapseEdge(mesh, request.edge);
+    case 'split-face':
+      return canSplitFace(mesh, request.face, request.from, request.to);
+    case 'poke-face':
+      return canPokeFace(mesh, request.face);
+    case 'erase-edge':
+      return canMergeFaces(mesh, request.edge);
+    case 'triangulate-face':
+      return canTriangulateFace(mesh, request.face);
+    case 'triangulate-mesh':
+      return mesh.nFaces === 0 ? 'there are no faces to triangulate' : null;
+  }
+}
+
+/**
+ * Applies a local edit to `mesh`, recording every pointer it rewires.
+ * @throws TopologyError with the `cannotEdit` sentence when it does not apply.
+ */
+export function applyEdit(mesh: HalfedgeMesh, request: EditRequest): EditResult & { label: string } {
+  const reason = cannotEdit(mesh, request);
+  if (reason) throw new TopologyError(reason);
+  switch (request.kind) {
+    case 'flip-edge':
+      return { label: `flip e${request.edge}`, ...flipEdge(mesh, request.edge) };
+    case 'split-edge':
+      return request.triangulate
+        ? { label: `split e${request.edge} (and its triangles)`, ...splitEdgeTriangulated(mesh, request.edge) }
+        : { label: `split e${request.edge}`, ...splitEdge(mesh, request.edge) };
+    case 'collapse-edge':
+      return { label: `collapse e${request.edge}`, ...collapseEdge(mesh, request.edge) };
+    case 'split-face':
+      return { label: `split f${request.face} from v${request.from} to v${request.to}`, ...splitFace(mesh, request.face, request.from, request.to) };
+    case 'poke-face':
+      return { label: `poke f${request.face}`, ...pokeFace(mesh, request.face) };
+    case 'erase-edge':
+      return { label: `erase e${request.edge}`, ...mergeFaces(mesh, request.edge) };
+    case 'triangulate-face':
+      return { label: `triangulate f${request.face}`, ...triangulateFace(mesh, request.face) };
+    case 'triangulate-mesh':
+      return { label: 'triangulate every face', ...triangulateMesh(mesh) };
+  }
+}

@@ -1,0 +1,140 @@
+/**
+ * The whole conversation between the page and the session worker, as types.
+ *
+ * The worker hosts one editing session: the current mesh, its history, and the operation being
+ * stepped. After every change it answers with a `Snapshot`: everything the page needs to draw the
+ * mesh and to answer pointer questions ("what is next of h17?") without another round trip. The
+ * snapshot's typed arrays are *transferred*, never copied a second time.
+ *
+ * Calls go through comlink (`SessionApi` is what `wrap()` returns on the page); errors cross the
+ * boundary with their type and fields intact (`installErrorTransfer`).
+ */
+import { transferHandlers } from 'comlink';
+import {
+  type BuildReport,
+  errorFromJSON,
+  type ErrorRecord,
+  errorToJSON,
+  meshBuffers,
+  type MeshStats,
+  type Phase,
+  type PointerDiff,
+  type SerializedMesh,
+  type Violation,
+} from '../core/index.js';
+import type { EditRequest, OperationRequest } from './operations.js';
+
+export type { EditRequest, OperationRequest };
+
+/** What the file said about itself. */
+export interface FileInfo {
+  name: string;
+  format: string;
+  encoding: string;
+  counts: { vertices: number; faces: number };
+  comments: string[];
+  notes: string[];
+}
+
+/** A parsed and built file, as the loader worker hands it over. */
+export interface LoadedFile {
+  mesh: SerializedMesh;
+  report: BuildReport;
+  file: FileInfo;
+}
+
+/** Triangles to draw (polygons split), each remembering its face for picking. */
+export interface RenderBuffers {
+  /** Vertex ids, three per triangle. */
+  triangles: Uint32Array;
+  /** The face each triangle belongs to. */
+  triangleFace: Int32Array;
+}
+
+export interface HistoryItem {
+  label: string;
+  vertices: number;
+  faces: number;
+}
+
+/** The operation being stepped, if any. */
+export interface SteppingState {
+  label: string;
+  /** Phases done so far. */
+  phases: number;
+  /** Phases in all, when the operation says in advance. */
+  total: number | null;
+}
+
+export interface Snapshot {
+  /** Increases with every snapshot the session sends. */
+  version: number;
+  mesh: SerializedMesh;
+  render: RenderBuffers;
+  stats: MeshStats;
+  /** What `validate()` found (empty: every invariant holds). */
+  problems: Violation[];
+  /** The build report of the file this mesh came from (until the first edit). */
+  report: BuildReport | null;
+  file: FileInfo | null;
+  /** The phase that produced this mesh, when stepping. */
+  phase: Phase | null;
+  /** Pointers changed by the last phase or edit (absent on very large meshes). */
+  diff: PointerDiff | null;
+  stepping: SteppingState | null;
+  history: { items: HistoryItem[]; index: number };
+}
+
+export interface ProgressEvent {
+  label: string;
+  /** 0 … 1. */
+  fraction: number;
+}
+
+export type ProgressListener = (event: ProgressEvent) => void;
+
+/** The session worker's methods, as the page sees them (every call is asynchronous). */
+export interface SessionApi {
+  adopt(loaded: LoadedFile): Promise<Snapshot>;
+  /** Puts back a mesh the page kept (after the worker had to be restarted). */
+  restore(mesh: SerializedMesh, label: string): Promise<Snapshot>;
+  snapshot(): Promise<Snapshot>;
+  start(request: OperationRequest): Promise<Snapshot>;
+  step(): Promise<Snapshot>;
+  runToEnd(): Promise<Snapshot>;
+  cancel(): Promise<Snapshot>;
+  edit(request: EditRequest): Promise<Snapshot>;
+  undo(): Promise<Snapshot>;
+  redo(): Promise<Snapshot>;
+  jump(index: number): Promise<Snapshot>;
+  exportMesh(format: string): Promise<Uint8Array>;
+  setProgressListener(listener: ProgressListener | null): Promise<void>;
+}
+
+/** The loader worker: parses and builds one file, then is thrown away (cancel = terminate it). */
+export interface LoaderApi {
+  load(bytes: Uint8Array, name: string, onProgress: ProgressListener): Promise<LoadedFile>;
+}
+
+/** Every buffer of a snapshot or loaded file, for the transfer list. */
+export function transferables(value: Snapshot | LoadedFile): ArrayBuffer[] {
+  const buffers = meshBuffers(value.mesh);
+  if ('render' in value) buffers.push(value.render.triangles.buffer as ArrayBuffer, value.render.triangleFace.buffer as ArrayBuffer);
+  return buffers;
+}
+
+/**
+ * Makes comlink carry errors as `errorToJSON` records, rebuilt with `errorFromJSON` on the other
+ * side, so a `ParseError` arrives as a `ParseError` with its format and location. Both the page
+ * and the workers call this once.
+ */
+export function installErrorTransfer(): void {
+  const builtIn = transferHandlers.get('throw')!;
+  transferHandlers.set('throw', {
+    canHandle: builtIn.canHandle,
+    serialize: ({ value }: { value: unknown }) => [errorToJSON(value), []],
+    deserialize: (record: ErrorRecord) => {
+      throw errorFromJSON(record);
+    },
+  } as typeof builtIn);
+}

@@ -1,0 +1,226 @@
+/**
+ * One editing session: the current mesh, the history of meshes before it, and the operation being
+ * stepped. Pure logic with no worker API in sight, so it is tested directly; `session.worker.ts`
+ * exposes it to the page.
+ *
+ * Every change works on a copy: the mesh in the history is never edited, so undo is a move of the
+ * index, cancel drops the copy, and a failing operation leaves the session as it was.
+ */
+import {
+  type BuildReport,
+  deserializeMesh,
+  diffPointers,
+  type HalfedgeMesh,
+  type Operation,
+  type Phase,
+  type PointerDiff,
+  type SerializedMesh,
+  TopologyError,
+} from '../core/index.js';
+import { writeMesh, type WriteFormat } from '../core/io/index.js';
+import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
+import type { FileInfo, LoadedFile, ProgressListener, Snapshot } from './protocol.js';
+import { makeSnapshot } from './snapshot.js';
+
+interface HistoryEntry {
+  label: string;
+  mesh: HalfedgeMesh;
+  report: BuildReport | null;
+  file: FileInfo | null;
+  phase: Phase | null;
+  diff: PointerDiff | null;
+}
+
+interface Stepping {
+  label: string;
+  /** Phases the operation announced, when it knows. */
+  total: number | null;
+  /** The copy being changed, phase by phase. */
+  working: HalfedgeMesh;
+  operation: Operation;
+  phases: number;
+  phase: Phase | null;
+  diff: PointerDiff | null;
+}
+
+/** Above this many halfedges, phases skip the pointer diff (it needs a copy of the whole mesh). */
+const DIFF_HALFEDGE_LIMIT = 600_000;
+
+export class EditingSession {
+  private history: HistoryEntry[] = [];
+  private index = -1;
+  private stepping: Stepping | null = null;
+  private cancelRequested = false;
+  private version = 0;
+  private progress: ProgressListener | null = null;
+
+  setProgressListener(listener: ProgressListener | null): void {
+    this.progress = listener;
+  }
+
+  /** Makes a parsed file the current mesh (a new history entry; redo is dropped). */
+  adopt(loaded: LoadedFile): Snapshot {
+    const mesh = deserializeMesh(loaded.mesh);
+    this.abandonStepping();
+    this.push({ label: `open ${loaded.file.name}`, mesh, report: loaded.report, file: loaded.file, phase: null, diff: null });
+    return this.snapshot();
+  }
+
+  restore(serialized: SerializedMesh, label: string): Snapshot {
+    this.abandonStepping();
+    this.push({ label, mesh: deserializeMesh(serialized), report: null, file: null, phase: null, diff: null });
+    return this.snapshot();
+  }
+
+  /** Starts stepping an operation on a copy of the current mesh; nothing changes until `step`. */
+  start(request: OperationRequest): Snapshot {
+    const current = this.current();
+    this.abandonStepping();
+    const working = current.mesh.clone();
+    // throws (leaving the session as it was) when the operation does not apply
+    const { operation, phases } = startOperation(working, request);
+    this.stepping = { label: operationLabel(request), total: phases, working, operation, phases: 0, phase: null, diff: null };
+    return this.snapshot();
+  }
+
+  /** Runs the next phase; when the operation has no more, its result joins the history. */
+  step(): Snapshot {
+    this.stepOnce();
+    return this.snapshot();
+  }
+
+  /**
+   * Runs the remaining phases, yielding to the event loop between them so that `cancel` (or any
+   * other call) is heard; reports progress after each phase.
+   */
+  async runToEnd(): Promise<Snapshot> {
+    this.cancelRequested = false;
+    while (this.stepping) {
+      const label = this.stepping.label;
+      this.stepOnce();
+      const done = this.stepping ? this.stepping.phases / (this.stepping.total ?? this.stepping.phases + 1) : 1;
+      this.progress?.({ label, fraction: Math.min(1, done) });
+      await new Promise((resolve) => setTimeout(resolve, 0));
+      if (this.cancelRequested) this.abandonStepping();
+    }
+    return this.snapshot();
+  }
+
+  /** Drops the operation being stepped (or run): back to the mesh before it. */
+  cancel(): Snapshot {
+    this.cancelRequested = true;
+    this.abandonStepping();
+    return this.snapshot();
+  }
+
+  edit(request: EditRequest): Snapshot {
+    const current = this.current();
+    this.abandonStepping();
+    const mesh = current.mesh.clone();
+    const result = applyEdit(mesh, request); // throws, leaving the session as it was
+    this.push({
+      label: result.label,
+      mesh,
+      report: null,
+      file: current.file,
+      phase: null,
+      diff: { changes: result.changes, total: result.changes.length },
+    });
+    return this.snapshot();
+  }
+
+  undo(): Snapshot {
+    this.abandonStepping();
+    if (this.index > 0) this.index--;
+    return this.snapshot();
+  }
+
+  redo(): Snapshot {
+    this.abandonStepping();
+    if (this.index + 1 < this.history.length) this.index++;
+    return this.snapshot();
+  }
+
+  jump(index: number): Snapshot {
+    if (!Number.isInteger(index) || index < 0 || index >= this.history.length) {
+      throw new RangeError(`history has entries 0..${this.history.length - 1}, not ${index}`);
+    }
+    this.abandonStepping();
+    this.index = index;
+    return this.snapshot();
+  }
+
+  exportMesh(format: string): Uint8Array {
+    const mesh = this.stepping?.working ?? this.current().mesh;
+    return writeMesh(mesh, format as WriteFormat);
+  }
+
+  snapshot(): Snapshot {
+    const entry = this.history[this.index];
+    const stepping = this.stepping;
+    const mesh = stepping?.working ?? entry?.mesh;
+    if (!mesh || !entry) throw new TopologyError('no mesh is open yet');
+    return makeSnapshot(mesh, {
+      version: ++this.version,
+      report: stepping ? null : entry.report,
+      file: entry.file,
+      phase: stepping ? stepping.phase : entry.phase,
+      diff: stepping ? stepping.diff : entry.diff,
+      stepping: stepping ? { label: stepping.label, phases: stepping.phases, total: stepping.total } : null,
+      history: { items: this.history.map(historyItem), index: this.index },
+    });
+  }
+
+  private stepOnce(): void {
+    const stepping = this.stepping;
+    if (!stepping) throw new TopologyError('no operation is being stepped: start one first');
+    const before = stepping.working.halfedgeSlots <= DIFF_HALFEDGE_LIMIT ? stepping.working.clone() : null;
+    let next = stepping.operation.next();
+    if (!next.done) {
+      stepping.phases++;
+      stepping.phase = next.value;
+      stepping.diff = before ? diffPointers(before, stepping.working, 2000) : null;
+      if (stepping.total === null || stepping.phases < stepping.total) return;
+      // that was the last announced phase: let the operation finish now, so no empty step follows
+      next = stepping.operation.next();
+      if (!next.done) {
+        // it had more to do than it announced: show that phase as well, and stop predicting
+        stepping.phases++;
+        stepping.phase = next.value;
+        stepping.diff = null;
+        stepping.total = null;
+        return;
+      }
+    }
+    // the operation is over: its result joins the history
+    this.stepping = null;
+    this.push({
+      label: stepping.label,
+      mesh: stepping.working,
+      report: null,
+      file: this.current().file,
+      phase: stepping.phase,
+      diff: stepping.diff,
+    });
+  }
+
+  private abandonStepping(): void {
+    this.stepping = null;
+  }
+
+  private current(): HistoryEntry {
+    const entry = this.history[this.index];
+    if (!entry) throw new TopologyError('no mesh is open yet');
+    return entry;
+  }
+
+  private push(entry: HistoryEntry): void {
+    this.history.length = this.index + 1;
+    this.history.push(entry);
+    this.index = this.history.length - 1;
+  }
+}
+
+function historyItem(entry: HistoryEntry) {
+  return { label: entry.label, vertices: entry.mesh.nVertices, faces: entry.mesh.nFaces };
+}
