@@ -45,8 +45,9 @@ export default defineConfig({
       },
     },
   ],
+  // the production build, served as a static host would (strict Content-Security-Policy included)
   webServer: {
-    command: `npx vite --port ${port} --strictPort`,
+    command: `npx vite build --logLevel warn && npx vite preview --port ${port} --strictPort`,
     url: `http://localhost:${port}`,
     reuseExistingServer: !process.env.CI,
     timeout: 120_000,

@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-npm ci
+npm ci --loglevel=warn
 
 if [ -x /usr/bin/chromium ] || [ -x /usr/bin/chromium-browser ]; then
   exit 0

@@ -1,0 +1,127 @@
+import { expect, test } from '@playwright/test';
+import { colors } from '../src/ui/colors.js';
+import { appErrors, canvasPixel, clickCanvas, colourDistance, hexToRgb, openApp } from './helpers.js';
+
+test.describe('the teaching app', () => {
+  test('opens the built-in sample and shows its counts with every invariant holding', async ({ page }, testInfo) => {
+    await openApp(page);
+    const state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.file?.name).toBe('disk.off');
+    expect([state.stats?.vertices, state.stats?.edges, state.stats?.faces]).toEqual([19, 42, 24]);
+    await expect(page.locator('#hud')).toContainText('χ19 − 42 + 24 = 1');
+    await expect(page.locator('#hud [data-valid="true"]')).toContainText('every halfedge invariant holds');
+    await page.screenshot({ path: testInfo.outputPath('default-sample.png') });
+    expect(appErrors(page)).toEqual([]);
+  });
+
+  test('selects a halfedge by clicking its arrow on the canvas', async ({ page }) => {
+    await openApp(page, 'tetrahedron.off');
+    await page.evaluate(() => window.halfedgeLab.setConvention('origin'));
+    // pick a halfedge whose arrow faces the camera
+    const target = await page.evaluate(() => {
+      for (let h = 0; h < 12; h++) {
+        const p = window.halfedgeLab.screenPosition(`h${h}`);
+        if (p.visible && window.halfedgeLab.pickAt(p.x, p.y, 'halfedge') === `h${h}`) return { h, ...p };
+      }
+      return null;
+    });
+    expect(target).not.toBeNull();
+    await clickCanvas(page, target!.x, target!.y);
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().selection)).toBe(`h${target!.h}`);
+    const record = await page.evaluate((name) => window.halfedgeLab.record(name), `h${target!.h}`);
+    await expect(page.locator('#record')).toContainText(`h${target!.h} {`);
+    await expect(page.locator('#record')).toContainText(`next: ${record.next}`);
+    await expect(page.locator('#record')).toContainText(`twin: ${record.twin}`);
+  });
+
+  test('walks next, twin and prev from the keyboard, with the breadcrumb and Back', async ({ page }) => {
+    await openApp(page, 'disk.off');
+    await page.evaluate(() => window.halfedgeLab.select('h0'));
+    const next = (await page.evaluate(() => window.halfedgeLab.record('h0'))).next;
+    await page.keyboard.press('n');
+    await expect(page.locator('#record')).toContainText(`${next} {`);
+    const twin = (await page.evaluate((h) => window.halfedgeLab.record(h), next)).twin;
+    await page.keyboard.press('t');
+    const prev = (await page.evaluate((h) => window.halfedgeLab.record(h), twin)).prev;
+    await page.keyboard.press('p');
+    await expect(page.locator('#breadcrumb')).toHaveText(`h0 → next → ${next} → twin → ${twin} → prev → ${prev}`);
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe(prev);
+    await page.keyboard.press('Backspace');
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe(twin);
+    // a walk that leads nowhere says why and stays put
+    await page.evaluate(() => window.halfedgeLab.select('v0'));
+    await page.keyboard.press('n');
+    await expect(page.locator('#walk-message')).toContainText('press H');
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe('v0');
+  });
+
+  test('lights up next, prev, twin and the face in the legend colours', async ({ page }, testInfo) => {
+    await openApp(page, 'disk.off');
+    await page.evaluate(() => window.halfedgeLab.select('h0'));
+    await page.locator('#frame-selection').click();
+    await page.waitForTimeout(300);
+    await page.screenshot({ path: testInfo.outputPath('pointer-highlight.png') });
+    const record = await page.evaluate(() => window.halfedgeLab.record('h0'));
+    const roles: Array<[string, string]> = [
+      ['h0', colors.selected],
+      [record.next!, colors.next],
+      [record.prev!, colors.prev],
+      [record.twin!, colors.twin],
+    ];
+    for (const [name, colour] of roles) {
+      const at = await page.evaluate((h) => window.halfedgeLab.screenPosition(h), name);
+      const pixel = await canvasPixel(page, at.x, at.y);
+      expect(colourDistance(pixel, hexToRgb(colour)), `${name} drawn in ${colour}, found rgb(${pixel.join(', ')})`).toBeLessThan(70);
+    }
+    // the face is tinted green: its centre is greener than the untinted surface
+    const face = await page.evaluate(() => window.halfedgeLab.screenPosition('f0'));
+    const [r, g, b] = await canvasPixel(page, face.x, face.y);
+    expect(g).toBeGreaterThan(r + 20);
+    expect(g).toBeGreaterThan(b - 10);
+  });
+
+  test('the record tables follow the selection, and a row click selects', async ({ page }) => {
+    await openApp(page, 'torus.off');
+    await page.evaluate(() => window.halfedgeLab.select('h300'));
+    const row = page.locator('#tables [data-element="h300"]');
+    await expect(row).toBeVisible();
+    await expect(row).toHaveAttribute('aria-selected', 'true');
+    await page.evaluate(() => window.halfedgeLab.select('v77'));
+    await expect(page.locator('[data-table="vertex"]')).toHaveAttribute('aria-selected', 'true');
+    await expect(page.locator('#tables [data-element="v77"]')).toBeVisible();
+    await page.locator('#tables [data-element="v78"]').click();
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe('v78');
+  });
+
+  test('keeps only the visible rows in the page on a mesh of thousands of records', async ({ page }) => {
+    await openApp(page, 'bunny.ply');
+    await page.locator('[data-table="halfedge"]').click();
+    const rows = await page.locator('#tables .table-rows > [data-element]').count();
+    expect(rows).toBeGreaterThan(5);
+    expect(rows).toBeLessThan(80);
+    await page.evaluate(() => window.halfedgeLab.select('h10000'));
+    await expect(page.locator('#tables [data-element="h10000"]')).toBeVisible();
+  });
+
+  test('plays a traversal step by step, highlighting the current line of code', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    await page.evaluate(() => window.halfedgeLab.select('f2'));
+    await page.getByRole('button', { name: 'Start traversal: Halfedges of this face' }).click();
+    await expect(page.locator('#traversal .line.current')).toHaveText('const start = mesh.faceHalfedge(f);');
+    const step = page.getByRole('button', { name: 'Step traversal' });
+    for (let i = 0; i < 3; i++) await step.click();
+    await expect(page.locator('#traversal .line.current')).toHaveText('  visit(h);');
+    // a quad: 4 visits, each of 4 lines after the first two
+    for (let i = 0; i < 4 * 4; i++) await step.click();
+    await expect(page.locator('#traversal [role="status"]')).toContainText('back at the start: done');
+    await expect(page.locator('#traversal [role="status"]')).toContainText(/visited: h\d+, h\d+, h\d+, h\d+ /);
+  });
+
+  test('gives every control an accessible name', async ({ page }) => {
+    await openApp(page);
+    const controls = page.locator('button:visible, input:visible, select:visible');
+    const count = await controls.count();
+    expect(count).toBeGreaterThan(20);
+    for (let i = 0; i < count; i++) await expect(controls.nth(i)).toHaveAccessibleName(/\S/);
+  });
+});

@@ -1,0 +1,52 @@
+import type { Page } from '@playwright/test';
+
+/** Opens the app (optionally on a sample model) and waits for the first mesh. */
+export async function openApp(page: Page, model?: string): Promise<void> {
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  page.on('console', (message) => {
+    // a Content-Security-Policy violation or an uncaught error fails the test that caused it
+    if (message.type() === 'error' && !message.text().includes('favicon')) errors.push(message.text());
+  });
+  (page as Page & { appErrors?: string[] }).appErrors = errors;
+  await page.goto(model ? `/?model=${encodeURIComponent(model)}` : '/');
+  await page.waitForFunction(() => window.halfedgeLab !== undefined);
+  await page.evaluate(() => window.halfedgeLab.ready);
+}
+
+export function appErrors(page: Page): string[] {
+  return (page as Page & { appErrors?: string[] }).appErrors ?? [];
+}
+
+/** Clicks the canvas at a point given relative to it. */
+export async function clickCanvas(page: Page, x: number, y: number): Promise<void> {
+  const box = await page.locator('#viewport canvas').boundingBox();
+  if (!box) throw new Error('no canvas');
+  await page.mouse.click(box.x + x, box.y + y);
+}
+
+/** Red, green, blue of a canvas pixel (CSS pixels relative to the canvas). */
+export async function canvasPixel(page: Page, x: number, y: number): Promise<[number, number, number]> {
+  return page.evaluate(
+    ([px, py]) => {
+      const canvas = document.querySelector('#viewport canvas') as HTMLCanvasElement;
+      const ratio = canvas.width / canvas.clientWidth;
+      const probe = document.createElement('canvas');
+      probe.width = probe.height = 1;
+      const context = probe.getContext('2d')!;
+      context.drawImage(canvas, Math.round(px * ratio), Math.round(py * ratio), 1, 1, 0, 0, 1, 1);
+      const [r, g, b] = context.getImageData(0, 0, 1, 1).data;
+      return [r, g, b] as [number, number, number];
+    },
+    [x, y],
+  );
+}
+
+export function hexToRgb(hex: string): [number, number, number] {
+  const n = parseInt(hex.slice(1), 16);
+  return [(n >> 16) & 255, (n >> 8) & 255, n & 255];
+}
+
+export function colourDistance(a: [number, number, number], b: [number, number, number]): number {
+  return Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
