@@ -77,6 +77,8 @@ export function automation(app: App) {
     undo: () => app.undo().then(summary),
     redo: () => app.redo().then(summary),
     jump: (index: number) => app.jump(index).then(summary),
+    /** Stops the editing worker as if it had run out of memory (the page should restart it and restore the mesh). */
+    simulateWorkerCrash: () => app.client.simulateCrash(),
     /** Everything the page shows, as plain data. */
     state: () => ({
       selection: app.selection ? elementName(app.selection) : null,

@@ -1,0 +1,75 @@
+import { readFileSync } from 'node:fs';
+import { expect, test } from '@playwright/test';
+import { buildMesh, meshStats, readMesh, uvSphere, writeSoup } from '../src/index.js';
+import { openApp } from './helpers.js';
+
+test.describe('the worker session', () => {
+  test('builds the same mesh in the worker as the library does in Node', async ({ page }) => {
+    await openApp(page, 'sphere.ply');
+    const file = readMesh(readFileSync('public/models/sphere.ply'), { fileName: 'sphere.ply' });
+    const { mesh, report } = buildMesh(file.soup);
+    const expected = meshStats(mesh, report);
+    const stats = await page.evaluate(() => window.halfedgeLab.state().stats!);
+    expect(stats).toEqual(JSON.parse(JSON.stringify(expected)));
+    for (const h of [0, 17, 151, mesh.halfedgeSlots - 1]) {
+      const record = await page.evaluate((name) => window.halfedgeLab.record(name), `h${h}`);
+      expect(record).toMatchObject({ next: `h${mesh.heNext[h]}`, prev: `h${mesh.hePrev[h]}`, twin: `h${h ^ 1}`, origin: `v${mesh.heVertex[h]}` });
+    }
+  });
+
+  test('keeps the page drawing while a large file is parsed off the main thread', async ({ page }) => {
+    await openApp(page, 'tetrahedron.off');
+    const big = writeSoup(uvSphere(400, 800), 'ply'); // 638k triangles of ascii PLY
+    const framesBefore = await page.evaluate(() => window.halfedgeLab.state().frames);
+    await page.locator('#file-input').setInputFiles({ name: 'big-sphere.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(big) });
+    // while the loader works, the progress bar shows and the frame counter keeps moving
+    await expect(page.locator('#progress')).toBeVisible();
+    const during: number[] = [];
+    while (await page.locator('#progress').isVisible()) {
+      during.push(await page.evaluate(() => window.halfedgeLab.state().frames));
+      await page.waitForTimeout(100);
+    }
+    expect(during.length).toBeGreaterThan(2);
+    expect(during.at(-1)!).toBeGreaterThan(during[0]! + 5);
+    expect(during[0]!).toBeGreaterThan(framesBefore - 1);
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(2 * 800 * 399);
+  });
+
+  test('shows a parse error with its place, and the previous mesh stays', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    const bad = 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n';
+    await page.locator('#file-input').setInputFiles({ name: 'broken.off', mimeType: 'text/plain', buffer: Buffer.from(bad) });
+    await expect(page.locator('#status')).toHaveAttribute('role', 'alert');
+    await expect(page.locator('#status')).toContainText('broken.off');
+    await expect(page.locator('#status')).toContainText('line 6');
+    await expect(page.locator('#status')).toContainText('previous mesh stays');
+    const state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.file?.name).toBe('cube.off');
+    expect(state.stats?.faces).toBe(6);
+  });
+
+  test('cancels a load in progress, keeping the previous mesh', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    const big = writeSoup(uvSphere(500, 1000), 'ply');
+    await page.locator('#file-input').setInputFiles({ name: 'huge.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(big) });
+    await page.getByRole('button', { name: 'Cancel' }).click();
+    await expect(page.locator('#status')).toContainText('previous mesh stays');
+    const state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.file?.name).toBe('cube.off');
+    expect(state.stats?.faces).toBe(6);
+  });
+
+  test('restarts a worker that died and restores the last good mesh', async ({ page }) => {
+    await openApp(page, 'torus.off');
+    await page.evaluate(() => window.halfedgeLab.select('h5'));
+    await page.evaluate(() => window.halfedgeLab.simulateWorkerCrash());
+    await expect(page.locator('#status')).toContainText('restarted with the last good mesh');
+    const state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.stats?.faces).toBe(128);
+    expect(state.selection).toBe('h5');
+    // and the new worker works
+    await page.evaluate(() => window.halfedgeLab.start({ kind: 'subdivide', scheme: 'catmull-clark' }));
+    await page.evaluate(() => window.halfedgeLab.runToEnd());
+    expect(await page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(4 * 128);
+  });
+});

@@ -1,0 +1,165 @@
+import { describe, expect, it } from 'vitest';
+import {
+  buildMesh,
+  cube,
+  deserializeMesh,
+  diffPointers,
+  ParseError,
+  serializeMesh,
+  subdivide,
+  tetrahedron,
+  TopologyError,
+  torus,
+  validate,
+  writeSoup,
+} from '../../src/index.js';
+import { loadFile } from '../../src/workers/load.js';
+import { transferables } from '../../src/workers/protocol.js';
+import { EditingSession } from '../../src/workers/session.js';
+
+function sessionWith(bytes: Uint8Array, name: string): EditingSession {
+  const session = new EditingSession();
+  session.adopt(loadFile(bytes, name));
+  return session;
+}
+
+const cubeFile = () => writeSoup(cube(), 'off');
+
+describe('EditingSession', () => {
+  it('opens a file into the first history entry and snapshots it', () => {
+    const session = new EditingSession();
+    const snapshot = session.adopt(loadFile(cubeFile(), 'cube.off'));
+    expect(snapshot.stats.faces).toBe(6);
+    expect(snapshot.problems).toEqual([]);
+    expect(snapshot.file?.name).toBe('cube.off');
+    expect(snapshot.history).toEqual({ items: [{ label: 'open cube.off', vertices: 8, faces: 6 }], index: 0 });
+    // quads are drawn as two triangles each, remembering their face
+    expect(snapshot.render.triangles.length).toBe(6 * 2 * 3);
+    expect(Array.from(snapshot.render.triangleFace.subarray(0, 4))).toEqual([0, 0, 1, 1]);
+  });
+
+  it('steps Loop subdivision phase by phase, valid after each, then adds it to the history', () => {
+    const session = sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
+    let snapshot = session.start({ kind: 'subdivide', scheme: 'loop' });
+    expect(snapshot.stepping).toEqual({ label: 'Loop subdivision', phases: 0, total: 4 });
+    const names: string[] = [];
+    for (let i = 0; i < 4; i++) {
+      snapshot = session.step();
+      expect(snapshot.problems).toEqual([]);
+      names.push(snapshot.phase!.name);
+    }
+    // the last announced phase finishes the operation: no empty step after it
+    expect(snapshot.stepping).toBeNull();
+    expect(snapshot.history.index).toBe(1);
+    expect(snapshot.history.items[1]).toEqual({ label: 'Loop subdivision', vertices: 10, faces: 16 });
+    expect(new Set(names).size).toBe(4);
+  });
+
+  it('gives the same mesh stepping as the library straight through', () => {
+    const session = sessionWith(writeSoup(torus(6, 4), 'off'), 't.off');
+    session.start({ kind: 'subdivide', scheme: 'catmull-clark' });
+    let snapshot = session.snapshot();
+    while (session.snapshot().stepping) snapshot = session.step();
+    const { mesh } = buildMesh(torus(6, 4));
+    subdivide(mesh, 'catmull-clark');
+    const fromSession = serializeMesh(mesh);
+    expect(Array.from(snapshot.mesh.heNext)).toEqual(Array.from(fromSession.heNext));
+    expect(Array.from(snapshot.mesh.attributes.vertex[0]!.data)).toEqual(Array.from(fromSession.attributes.vertex[0]!.data));
+  });
+
+  it('cancels a stepped operation back to the mesh before it', () => {
+    const session = sessionWith(cubeFile(), 'cube.off');
+    session.start({ kind: 'subdivide', scheme: 'catmull-clark' });
+    expect(session.step().stats.vertices).toBeGreaterThan(8);
+    const snapshot = session.cancel();
+    expect(snapshot.stats.vertices).toBe(8);
+    expect(snapshot.stepping).toBeNull();
+    expect(snapshot.history.items).toHaveLength(1);
+  });
+
+  it('refuses an operation that does not apply, leaving everything as it was', () => {
+    const session = sessionWith(cubeFile(), 'cube.off');
+    const before = session.snapshot();
+    expect(() => session.start({ kind: 'subdivide', scheme: 'loop' })).toThrow(TopologyError);
+    expect(() => session.start({ kind: 'subdivide', scheme: 'loop' })).toThrow(/triangles/);
+    const after = session.snapshot();
+    expect(after.stepping).toBeNull();
+    expect(after.history).toEqual(before.history);
+  });
+
+  it('applies a local edit with its exact pointer diff, and undoes and redoes it', () => {
+    const session = sessionWith(writeSoup(torus(4, 4), 'off'), 't.off');
+    const before = session.snapshot();
+    const edited = session.edit({ kind: 'poke-face', face: 3 });
+    expect(edited.stats.faces).toBe(16 - 1 + 4);
+    expect(edited.diff!.changes).toEqual(diffPointers(deserializeMesh(before.mesh), deserializeMesh(edited.mesh)).changes);
+    expect(edited.history.items.map((i) => i.label)).toEqual(['open t.off', 'poke f3']);
+    expect(session.undo().stats).toEqual(before.stats);
+    expect(session.redo().stats).toEqual(edited.stats);
+    expect(session.jump(0).history.index).toBe(0);
+    // an edit made after going back replaces the undone branch
+    const branched = session.edit({ kind: 'split-edge', edge: 0 });
+    expect(branched.history.items.map((i) => i.label)).toEqual(['open t.off', 'split e0']);
+    expect(() => session.edit({ kind: 'flip-edge', edge: 0 })).toThrow(TopologyError);
+  });
+
+  it('runs to the end in one call, reporting progress after each phase', async () => {
+    const session = sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
+    const events: number[] = [];
+    session.setProgressListener((event) => events.push(event.fraction));
+    session.start({ kind: 'subdivide', scheme: 'loop' });
+    const snapshot = await session.runToEnd();
+    expect(snapshot.stats.faces).toBe(16);
+    expect(events).toEqual([0.25, 0.5, 0.75, 1]);
+  });
+
+  it('hears a cancel while running to the end', async () => {
+    const session = sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
+    session.start({ kind: 'subdivide', scheme: 'loop' });
+    const running = session.runToEnd();
+    session.cancel();
+    const snapshot = await running;
+    expect(snapshot.stats.faces).toBe(4);
+    expect(snapshot.history.items).toHaveLength(1);
+  });
+
+  it('exports the current mesh in the asked format', () => {
+    const session = sessionWith(cubeFile(), 'cube.off');
+    const text = new TextDecoder().decode(session.exportMesh('obj'));
+    expect(text.match(/^f /gm)).toHaveLength(6);
+  });
+});
+
+describe('loading files for the session', () => {
+  it('raises the parser error with its place, and leaves the session untouched', () => {
+    const session = sessionWith(cubeFile(), 'cube.off');
+    const bad = new TextEncoder().encode('OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n');
+    expect(() => session.adopt(loadFile(bad, 'bad.off'))).toThrow(ParseError);
+    expect(() => loadFile(bad, 'bad.off')).toThrow(/line 6/);
+    expect(session.snapshot().stats.faces).toBe(6);
+  });
+
+  it('reports progress from reading to building, ending at 1', () => {
+    const fractions: number[] = [];
+    loadFile(writeSoup(torus(40, 40), 'ply-binary'), 't.ply', (event) => fractions.push(event.fraction));
+    expect(fractions.at(-1)).toBe(1);
+    expect([...fractions].sort((a, b) => a - b)).toEqual(fractions);
+  });
+});
+
+describe('snapshots cross the worker boundary by transfer', () => {
+  it('lists every buffer, and transferring empties the sender’s arrays', () => {
+    const session = sessionWith(cubeFile(), 'cube.off');
+    const snapshot = session.snapshot();
+    const buffers = transferables(snapshot);
+    expect(buffers).toContain(snapshot.mesh.heNext.buffer);
+    expect(buffers).toContain(snapshot.render.triangles.buffer);
+    const received = structuredClone(snapshot, { transfer: buffers });
+    expect(snapshot.mesh.heNext.byteLength).toBe(0);
+    expect(snapshot.render.triangles.byteLength).toBe(0);
+    expect(received.mesh.heNext.length).toBe(24);
+    // and the session still has its mesh
+    expect(validate(buildMesh(cube()).mesh)).toEqual([]);
+    expect(session.snapshot().mesh.heNext.length).toBe(24);
+  });
+});
