@@ -1,7 +1,7 @@
 /** Reading and writing mesh files for the CLI, and turning failures into one line on stderr. */
 import { readFileSync, writeFileSync } from 'node:fs';
 import { basename } from 'node:path';
-import { parseArgs, type ParseArgsConfig } from 'node:util';
+import { parseArgs } from 'node:util';
 import {
   buildMesh,
   type BuildResult,
@@ -63,10 +63,17 @@ export function saveMesh(mesh: HalfedgeMesh, path: string, format?: string): voi
 }
 
 /** `parseArgs` that turns its errors into usage errors. */
-export function parseOptions<T extends ParseArgsConfig['options']>(args: string[], options: T, positionals: number) {
-  let parsed;
+type OptionSpecs = Record<string, { type: 'string' | 'boolean'; short?: string }>;
+
+export interface ParsedArgs<T extends OptionSpecs> {
+  values: { [K in keyof T]?: T[K]['type'] extends 'string' ? string : boolean };
+  positionals: string[];
+}
+
+export function parseOptions<T extends OptionSpecs>(args: string[], options: T, positionals: number): ParsedArgs<T> {
+  let parsed: ParsedArgs<T>;
   try {
-    parsed = parseArgs({ args, options, allowPositionals: true, strict: true });
+    parsed = parseArgs({ args, options, allowPositionals: true, strict: true }) as ParsedArgs<T>;
   } catch (error) {
     throw new UsageError((error as Error).message);
   }
