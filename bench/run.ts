@@ -6,8 +6,9 @@
  */
 import { type BenchCase, runCase } from './harness.js';
 import { buildCases } from './cases/build.js';
+import { parseCases } from './cases/parse.js';
 
-const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases];
+const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases];
 
 const args = process.argv.slice(2);
 const json = args.includes('--json');

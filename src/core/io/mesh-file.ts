@@ -1,0 +1,48 @@
+/**
+ * What reading a mesh file gives: the polygon soup (faces kept as the file has them, never
+ * triangulated, with their attributes), the counts the file states, its comments, and plain
+ * sentences about anything the reader noticed or skipped, for the app to show beside the mesh.
+ */
+import { plural } from '../report.js';
+import type { PolygonSoup } from '../soup.js';
+
+export type MeshFormat = 'ply' | 'off' | 'obj' | 'stl';
+
+export type Encoding = 'ascii' | 'binary_little_endian' | 'binary_big_endian';
+
+export interface ReadOptions {
+  /** Used only when the content does not say which format it is. */
+  fileName?: string;
+  /** Called now and then with the fraction of the file read (0…1). */
+  onProgress?: (fraction: number) => void;
+}
+
+export interface MeshFile {
+  format: MeshFormat;
+  encoding: Encoding;
+  /** Faces as polygons; attributes in `vertexAttributes`, `faceAttributes`, `cornerAttributes`. */
+  soup: PolygonSoup;
+  /** As stated or present in the file, before any building. */
+  counts: { vertices: number; faces: number };
+  /** PLY `comment` and `obj_info` lines; the text of OFF and OBJ `#` comments. */
+  comments: string[];
+  /** What the reader noticed or skipped, as sentences. */
+  notes: string[];
+}
+
+export type Progress = (fraction: number) => void;
+
+/** Binary data can hold NaN or infinity (text readers refuse them): note which vertex first has one. */
+export function noteNonFinitePositions(positions: ArrayLike<number>, notes: string[]): void {
+  let count = 0;
+  let first = -1;
+  for (let i = 0; i + 2 < positions.length; i += 3) {
+    if (Number.isFinite(positions[i] + positions[i + 1] + positions[i + 2])) continue;
+    if (first < 0) first = i / 3;
+    count++;
+  }
+  if (count > 0) {
+    const all = plural(count, 'such vertex', 'such vertices');
+    notes.push(`vertex ${first} has a coordinate that is NaN or infinite (${all} in all)`);
+  }
+}

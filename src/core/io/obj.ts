@@ -1,0 +1,256 @@
+/**
+ * OBJ (Wavefront): one statement a line, named by its first word.
+ *
+ * ```
+ * v 0 0 0                 a vertex: x y z (then an optional w, or a colour r g b)
+ * vt 0.5 1                a texture coordinate: u [v [w]]
+ * vn 0 0 1                a normal
+ * f 1/1/1 2/2/1 3/3/1     a face; each corner is v, v/vt, v//vn or v/vt/vn
+ * ```
+ *
+ * Indices count from 1 in the order the statements come; a negative one counts back from the
+ * latest (-1 is the vertex just above). Each corner names its own texture coordinate and normal,
+ * so one vertex may have several (along a texture seam): they become the corner attributes
+ * `texcoord` and `normal`, which the builder turns into halfedge attributes. Groups, objects,
+ * materials, smoothing groups, lines and points mean nothing to a halfedge mesh: each kind is
+ * counted in the notes and skipped.
+ */
+import { ParseError } from '../errors.js';
+import { plural } from '../report.js';
+import type { SoupAttribute } from '../soup.js';
+import { GrowableArray } from './growable.js';
+import type { MeshFile, Progress } from './mesh-file.js';
+import { TextScanner } from './text.js';
+
+const SLASH = 47;
+const SPACE = 32;
+const HASH = 35;
+
+/** A face index read before its element was defined, kept to check once the file is read. */
+interface ForwardReference {
+  index: number;
+  face: number;
+  line: number;
+  column: number;
+}
+
+/** Indices into one list (v, vt or vn) as the file gives them. */
+class IndexResolver {
+  readonly name: string;
+  count = 0;
+  /** The largest index met that was beyond the list at the time. */
+  furthest: ForwardReference | null = null;
+
+  constructor(name: string) {
+    this.name = name;
+  }
+
+  /** The 0-based index that `written` (1-based, or negative: relative) names. */
+  resolve(written: number, face: number, scanner: TextScanner, at: number): number {
+    if (written === 0) scanner.fail(`face ${face}: OBJ ${this.name} indices count from 1; 0 names nothing`, at);
+    const index = written > 0 ? written - 1 : this.count + written;
+    if (index < 0) {
+      const reason = `${this.name} index ${written} reaches back before the first ${this.name} (${this.count} so far)`;
+      scanner.fail(`face ${face}: ${reason}`, at);
+    }
+    if (index >= this.count && (this.furthest === null || index > this.furthest.index)) {
+      this.furthest = { index, face, ...scanner.location(at) };
+    }
+    return index;
+  }
+
+  /** @throws ParseError when an index named an element the file never defined. */
+  check(): void {
+    const furthest = this.furthest;
+    if (furthest === null || furthest.index < this.count) return;
+    const { index, face, line, column } = furthest;
+    const range = this.count === 0 ? `the file has no ${this.name}` : `it is out of range 1..${this.count}`;
+    const reason = `face ${face}: ${this.name} index ${index + 1} names nothing: ${range}`;
+    throw new ParseError('obj', { line, column }, reason);
+  }
+}
+
+/**
+ * Reads an OBJ file into a polygon soup, with per-corner texture coordinates and normals.
+ * @throws ParseError with the line and column.
+ */
+export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
+  const comments: string[] = [];
+  const notes: string[] = [];
+  const scanner = new TextScanner(bytes, 'obj', { hashComments: true, comments });
+  const guess = bytes.length >> 6;
+  const positions = new GrowableArray((n) => new Float64Array(n), 3 * guess);
+  const texcoords = new GrowableArray((n) => new Float32Array(n), 0);
+  const normals = new GrowableArray((n) => new Float32Array(n), 0);
+  let colors: GrowableArray<Float32Array<ArrayBuffer>> | null = null;
+  const faceStarts = new GrowableArray((n) => new Uint32Array(n), guess);
+  faceStarts.push(0);
+  const faceIndices = new GrowableArray((n) => new Uint32Array(n), 3 * guess);
+  // per corner: which vt and vn it names (-1: none); made when the first corner names one
+  let cornerTexcoords: GrowableArray<Int32Array<ArrayBuffer>> | null = null;
+  let cornerNormals: GrowableArray<Int32Array<ArrayBuffer>> | null = null;
+  const vertexIds = new IndexResolver('vertex');
+  const texcoordIds = new IndexResolver('texture coordinate');
+  const normalIds = new IndexResolver('normal');
+  const ignored = new Map<string, number>();
+  const values = new Float64Array(8);
+  let statements = 0;
+
+  /** The numbers left on this line (at most 8), in `values`. */
+  const readNumbers = (what: string): number => {
+    let count = 0;
+    while (!scanner.atLineEnd()) {
+      if (count === values.length) scanner.fail(`${what} has more than ${values.length} numbers`);
+      values[count++] = scanner.number();
+    }
+    return count;
+  };
+  /** Whether a number follows right here (not a space, a slash or the end of the line). */
+  const numberFollows = (): boolean => {
+    const c = bytes[scanner.pos];
+    return c !== undefined && c > SPACE && c !== SLASH && c !== HASH;
+  };
+  /** Per-corner ids, for when the first corner names one: the corners before it name none. */
+  const noneSoFar = () => {
+    const ids = new GrowableArray((n) => new Int32Array(n), faceIndices.data.length);
+    ids.pushRepeated(-1, faceIndices.length - 1);
+    return ids;
+  };
+
+  while (scanner.skipBlankLines()) {
+    if ((++statements & 0xffff) === 0) progress(scanner.pos / bytes.length);
+    const keywordAt = scanner.pos;
+    const keyword = scanner.word();
+    switch (keyword) {
+      case 'v': {
+        const count = readNumbers('a vertex');
+        if (count !== 3 && count !== 4 && count !== 6) {
+          const reason = `a vertex has x y z (then an optional w, or a colour r g b), not ${plural(count, 'number')}`;
+          scanner.fail(reason, keywordAt);
+        }
+        const data = positions.reserve(3);
+        for (let k = 0; k < 3; k++) data[positions.length++] = values[k];
+        if (count === 6) {
+          if (!colors) {
+            colors = new GrowableArray((n) => new Float32Array(n), positions.data.length);
+            colors.pushRepeated(Number.NaN, positions.length - 3);
+          }
+          for (let k = 3; k < 6; k++) colors.push(values[k]);
+        } else if (colors) {
+          for (let k = 0; k < 3; k++) colors.push(Number.NaN);
+        }
+        vertexIds.count++;
+        break;
+      }
+      case 'vt': {
+        const count = readNumbers('a texture coordinate');
+        if (count < 1 || count > 3) {
+          scanner.fail(`a texture coordinate has u [v [w]], not ${plural(count, 'number')}`, keywordAt);
+        }
+        texcoords.push(values[0]);
+        texcoords.push(count > 1 ? values[1] : 0);
+        texcoordIds.count++;
+        break;
+      }
+      case 'vn': {
+        if (readNumbers('a normal') !== 3) scanner.fail('a normal has 3 numbers: x y z', keywordAt);
+        for (let k = 0; k < 3; k++) normals.push(values[k]);
+        normalIds.count++;
+        break;
+      }
+      case 'f': {
+        const face = faceStarts.length - 1;
+        while (!scanner.atLineEnd()) {
+          const at = scanner.pos;
+          faceIndices.push(vertexIds.resolve(scanner.integer(true), face, scanner, at));
+          let texcoord = -1;
+          let normal = -1;
+          if (bytes[scanner.pos] === SLASH) {
+            scanner.pos++;
+            const texcoordAt = scanner.pos;
+            if (numberFollows()) texcoord = texcoordIds.resolve(scanner.integer(true), face, scanner, texcoordAt);
+            if (bytes[scanner.pos] === SLASH) {
+              scanner.pos++;
+              const normalAt = scanner.pos;
+              if (numberFollows()) normal = normalIds.resolve(scanner.integer(), face, scanner, normalAt);
+            }
+          }
+          if (texcoord >= 0) cornerTexcoords ??= noneSoFar();
+          if (normal >= 0) cornerNormals ??= noneSoFar();
+          cornerTexcoords?.push(texcoord);
+          cornerNormals?.push(normal);
+        }
+        if (faceIndices.length === faceStarts.data[face]) scanner.fail(`face ${face} has no corners`, keywordAt);
+        faceStarts.push(faceIndices.length);
+        break;
+      }
+      default:
+        ignored.set(keyword, (ignored.get(keyword) ?? 0) + 1);
+        scanner.nextLine();
+        continue;
+    }
+    scanner.endLine(`the '${keyword}' statement should end here`);
+  }
+  vertexIds.check();
+  texcoordIds.check();
+  normalIds.check();
+
+  const vertexCount = vertexIds.count;
+  const faceCount = faceStarts.length - 1;
+  const vertexAttributes: SoupAttribute[] = [];
+  if (colors) {
+    const data = colors.finish();
+    const uncolored = data.reduce((n, x, i) => (i % 3 === 0 && Number.isNaN(x) ? n + 1 : n), 0);
+    if (uncolored > 0) notes.push(`${plural(uncolored, 'vertex has', 'vertices have')} no colour (left black)`);
+    vertexAttributes.push({ name: 'color', itemSize: 3, data: data.map((x) => (Number.isNaN(x) ? 0 : x)) });
+  }
+  const cornerAttributes: SoupAttribute[] = [];
+  if (cornerTexcoords) {
+    cornerAttributes.push(gather('texcoord', 2, texcoords.finish(), cornerTexcoords.finish(), notes));
+  }
+  if (cornerNormals) cornerAttributes.push(gather('normal', 3, normals.finish(), cornerNormals.finish(), notes));
+  if (ignored.size > 0) {
+    // a file that is not really OBJ can have thousands of "statements": name the first few kinds
+    const total = [...ignored.values()].reduce((a, b) => a + b, 0);
+    const kinds = [...ignored].slice(0, 8).map(([name, n]) => `${n} '${name.slice(0, 24)}'`);
+    if (ignored.size > 8) kinds.push(`${ignored.size - 8} other kinds`);
+    notes.push(`ignored ${plural(total, 'OBJ statement')}: ${kinds.join(', ')}`);
+  }
+  if (vertexCount > 0 && faceCount === 0) notes.push('no faces: loaded as a point set');
+  if (scanner.droppedComments > 0) {
+    notes.push(`kept the first ${comments.length} comments, ${scanner.droppedComments} more not kept`);
+  }
+  return {
+    format: 'obj',
+    encoding: 'ascii',
+    soup: {
+      positions: positions.finish(),
+      faceStarts: faceStarts.finish(),
+      faceIndices: faceIndices.finish(),
+      vertexAttributes,
+      cornerAttributes,
+    },
+    counts: { vertices: vertexCount, faces: faceCount },
+    comments,
+    notes,
+  };
+}
+
+/** One value per corner, looked up from the list the corners index (-1: none, left zero). */
+function gather(
+  name: string,
+  itemSize: number,
+  list: Float32Array<ArrayBuffer>,
+  cornerIds: Int32Array,
+  notes: string[],
+): SoupAttribute {
+  const data = new Float32Array(itemSize * cornerIds.length);
+  let missing = 0;
+  for (let c = 0; c < cornerIds.length; c++) {
+    const id = cornerIds[c];
+    if (id < 0) missing++;
+    else data.set(list.subarray(itemSize * id, itemSize * (id + 1)), itemSize * c);
+  }
+  if (missing > 0) notes.push(`${plural(missing, 'face corner names', 'face corners name')} no ${name} (set to zero)`);
+  return { name, itemSize, data };
+}

@@ -1,0 +1,496 @@
+/**
+ * OFF, Geomview's Object File Format: a keyword, the counts, one vertex a line, one face a line.
+ *
+ * ```
+ * OFF                     [ST][C][N][4][n]OFF: the prefixes say what each vertex line carries
+ * 8 6 12                  vertices, faces, edges (the edge count is never used)
+ * 0 0 0                   x y z [nx ny nz] [r g b [a]] [s t]
+ * …
+ * 4 0 3 2 1  1 0 0        corner count, vertex ids (from 0), then an optional face colour
+ * ```
+ *
+ * The prefixes: `ST` texture coordinates, `C` colours, `N` normals, `4` a fourth, homogeneous
+ * coordinate (x y z w, meaning x/w y/w z/w), `n` a dimension given after the keyword. A face
+ * colour is 0 numbers (none), 1 (an index into a colour map, ignored), or 3–4 (RGB[A]): integers
+ * 0…255 or reals 0…1, kept as uint8 or float32 accordingly. `#` starts a comment anywhere.
+ *
+ * `OFF BINARY` is followed by the same data as 32-bit ints and floats. Geomview's spec makes it
+ * big-endian with a colour count after each face; pmp-library writes it little-endian without
+ * the count. Each layout is tried; the one that uses the file up exactly wins.
+ */
+import { ParseError } from '../errors.js';
+import { plural } from '../report.js';
+import type { PolygonSoup, SoupAttribute } from '../soup.js';
+import { BinaryReader } from './binary.js';
+import { GrowableArray } from './growable.js';
+import { type MeshFile, noteNonFinitePositions, type Progress } from './mesh-file.js';
+import { TextScanner } from './text.js';
+
+/** `[ST][C][N][4][n]OFF`, possibly with the counts glued on (`OFF8 6 0`). */
+const KEYWORD = /^(ST)?(C)?(N)?(4)?(n)?OFF/;
+
+/** What each vertex line carries, from the keyword. */
+interface OffShape {
+  keyword: string;
+  texcoords: boolean;
+  colors: boolean;
+  normals: boolean;
+  homogeneous: boolean;
+  /** Coordinates before the homogeneous one: 3 unless `nOFF` says otherwise. */
+  dimension: number;
+}
+
+/** Numbers one vertex or face line may carry at most. */
+const MAX_VALUES_PER_LINE = 32;
+
+/**
+ * Reads an OFF file (text or `OFF BINARY`) into a polygon soup.
+ * @throws ParseError with the line and column (text) or byte offset (binary).
+ */
+export function readOff(bytes: Uint8Array, progress: Progress): MeshFile {
+  const comments: string[] = [];
+  const notes: string[] = [];
+  const scanner = new TextScanner(bytes, 'off', { hashComments: true, comments });
+  if (!scanner.skipBlankLines()) scanner.fail('the file holds no OFF data (only blank lines or comments)');
+  if (scanner.token() === 'appearance') skipAppearanceBlock(scanner, notes);
+
+  // the keyword
+  const keywordAt = scanner.pos;
+  const keywordLocation = scanner.location();
+  const word = scanner.word();
+  const match = KEYWORD.exec(word);
+  const shape: OffShape = {
+    keyword: match?.[0] ?? 'OFF',
+    texcoords: !!match?.[1],
+    colors: !!match?.[2],
+    normals: !!match?.[3],
+    homogeneous: !!match?.[4],
+    dimension: 3,
+  };
+  if (match) {
+    const glued = word.slice(match[0].length);
+    if (glued && !/^\d/.test(glued)) {
+      scanner.fail(`unknown keyword '${word}' (OFF, COFF, NOFF, STOFF, 4OFF, nOFF, …)`, keywordAt);
+    }
+    // counts glued to the keyword (OFF8 6 0): go back to read them as numbers
+    scanner.pos = keywordAt + match[0].length;
+  } else if (/^[-+.\d]/.test(word)) {
+    scanner.pos = keywordAt;
+    notes.push('no OFF keyword: read as plain OFF');
+  } else {
+    const found = scanner.token(keywordAt);
+    scanner.fail(`expected the keyword OFF (or COFF, NOFF, STOFF, 4OFF, nOFF, …), found '${found}'`, keywordAt);
+  }
+  let binary = false;
+  if (!scanner.atLineEnd() && scanner.token() === 'BINARY') {
+    scanner.word();
+    binary = true;
+  }
+  if (match?.[5]) {
+    if (binary) {
+      scanner.fail(`${shape.keyword} BINARY files are not supported (text ${shape.keyword} files are)`);
+    }
+    if (!scanner.skipBlankLines()) scanner.fail('the file ends before the dimension that nOFF announces');
+    const at = scanner.pos;
+    shape.dimension = scanner.integer();
+    if (shape.dimension < 1) scanner.fail(`the dimension must be at least 1, not ${shape.dimension}`, at);
+  }
+  if (shape.dimension > 3) {
+    throw new ParseError(
+      'off',
+      keywordLocation,
+      `${shape.keyword} vertices have ${shape.dimension} coordinates: only meshes in 3D (or 2D) can be read`,
+    );
+  }
+
+  let file: Omit<MeshFile, 'comments' | 'notes'>;
+  if (binary) {
+    scanner.nextLine();
+    file = readBinaryOff(bytes, scanner.pos, shape, notes);
+  } else {
+    file = readTextOff(scanner, shape, notes, progress);
+  }
+  if (scanner.droppedComments > 0) {
+    notes.push(`kept the first ${comments.length} comments, ${scanner.droppedComments} more not kept`);
+  }
+  return { ...file, comments, notes };
+}
+
+/** Geomview files may open with an `appearance { … }` block (braces nest); it is not geometry. */
+function skipAppearanceBlock(scanner: TextScanner, notes: string[]): void {
+  const start = scanner.location();
+  scanner.word();
+  let depth = 0;
+  do {
+    if (!scanner.skipBlankLines()) throw new ParseError('off', start, "the 'appearance { … }' block is never closed");
+    const token = scanner.word();
+    for (const ch of token) {
+      if (ch === '{') depth++;
+      else if (ch === '}') depth--;
+    }
+  } while (depth > 0);
+  scanner.skipBlankLines();
+  const lines = `lines ${start.line}–${scanner.line - 1}`;
+  notes.push(`skipped a Geomview 'appearance { … }' block before the keyword (${lines})`);
+}
+
+// -------------------------------------------------------------------------------------------------
+// What vertex and face lines carry, for both encodings
+
+type Fail = (reason: string) => never;
+
+/** The arrays of an OFF mesh, filled vertex by vertex and face by face. */
+class OffMesh {
+  readonly shape: OffShape;
+  readonly positions: Float64Array;
+  readonly normals: Float32Array<ArrayBuffer> | null;
+  readonly texcoords: Float32Array<ArrayBuffer> | null;
+  readonly vertexColors: ColorCollector | null;
+  readonly faceStarts: Uint32Array;
+  readonly faceIndices: GrowableArray<Uint32Array<ArrayBuffer>>;
+  readonly faceColors: ColorCollector;
+  /** Faces whose colour was an index into a colour map (not kept). */
+  colormapIndices = 0;
+  /** Vertex lines with more numbers than the keyword announces (plain OFF files often have them). */
+  vertexExtras = 0;
+
+  constructor(shape: OffShape, vertexCount: number, faceCount: number) {
+    this.shape = shape;
+    this.positions = new Float64Array(3 * vertexCount);
+    this.normals = shape.normals ? new Float32Array(3 * vertexCount) : null;
+    this.texcoords = shape.texcoords ? new Float32Array(2 * vertexCount) : null;
+    this.vertexColors = shape.colors ? new ColorCollector(vertexCount) : null;
+    this.faceStarts = new Uint32Array(faceCount + 1);
+    this.faceIndices = new GrowableArray((n) => new Uint32Array(n), 3 * faceCount);
+    this.faceColors = new ColorCollector(faceCount);
+  }
+
+  /**
+   * Stores vertex `v` from the `count` numbers of its line: coordinates, then normal, colour and
+   * texture coordinates as the keyword says.
+   */
+  setVertex(v: number, values: Float64Array, integral: Uint8Array, count: number, fail: Fail): void {
+    const { shape, positions } = this;
+    const coordinates = shape.dimension + (shape.homogeneous ? 1 : 0);
+    if (count < coordinates) {
+      fail(`vertex ${v} has ${count} numbers, but ${shape.keyword} needs ${coordinates} coordinates`);
+    }
+    const w = shape.homogeneous ? values[shape.dimension] : 1;
+    if (w === 0) fail(`vertex ${v} has w = 0: a point at infinity has no place in a mesh`);
+    for (let k = 0; k < 3; k++) positions[3 * v + k] = k < shape.dimension ? values[k] / w : 0;
+
+    let at = coordinates;
+    const normalCount = shape.normals ? 3 : 0;
+    const texcoordCount = shape.texcoords ? 2 : 0;
+    const colorCount = count - at - normalCount - texcoordCount;
+    if (shape.colors ? colorCount !== 3 && colorCount !== 4 : colorCount < 0) {
+      const parts = [
+        shape.normals && 'a normal (3)',
+        shape.colors && 'a colour (3 or 4)',
+        shape.texcoords && 'texture coordinates (2)',
+      ];
+      const needs = parts.filter(Boolean).join(', ');
+      fail(`vertex ${v} has ${count - at} numbers after its coordinates, but ${shape.keyword} needs ${needs}`);
+    }
+    if (this.normals) {
+      for (let k = 0; k < 3; k++) this.normals[3 * v + k] = values[at + k];
+      at += 3;
+    }
+    if (this.vertexColors) {
+      this.vertexColors.set(v, values, integral, at, colorCount);
+      at += colorCount;
+    } else if (colorCount > 0) {
+      this.vertexExtras++;
+    }
+    if (this.texcoords) {
+      for (let k = 0; k < 2; k++) this.texcoords[2 * v + k] = values[at + k];
+    }
+  }
+
+  /** Stores the colour that follows face `f`'s vertex ids (0, 1, 3 or 4 numbers). */
+  setFaceColor(f: number, values: Float64Array, integral: Uint8Array, count: number, fail: Fail): void {
+    if (count === 1) this.colormapIndices++;
+    else if (count === 3 || count === 4) this.faceColors.set(f, values, integral, 0, count);
+    else if (count !== 0) {
+      fail(`face ${f} has ${count} numbers after its vertex ids; a colour is 1, 3 or 4 (is its corner count right?)`);
+    }
+  }
+
+  finish(notes: string[]): PolygonSoup {
+    const vertexCount = this.positions.length / 3;
+    const vertexAttributes: SoupAttribute[] = [];
+    if (this.normals) vertexAttributes.push({ name: 'normal', itemSize: 3, data: this.normals });
+    const vertexColor = this.vertexColors?.finish('vertex', notes);
+    if (vertexColor) vertexAttributes.push(vertexColor);
+    if (this.texcoords) vertexAttributes.push({ name: 'texcoord', itemSize: 2, data: this.texcoords });
+    const faceColor = this.faceColors.finish('face', notes);
+    if (this.colormapIndices > 0) {
+      notes.push(`ignored the colour-map indices of ${plural(this.colormapIndices, 'face')} (no colour map is loaded)`);
+    }
+    if (this.vertexExtras > 0) {
+      notes.push(`ignored extra numbers after the coordinates of ${plural(this.vertexExtras, 'vertex', 'vertices')}`);
+    }
+    const faceCount = this.faceStarts.length - 1;
+    if (vertexCount > 0 && faceCount === 0) notes.push('no faces: loaded as a point set');
+    noteNonFinitePositions(this.positions, notes);
+    return {
+      positions: this.positions,
+      faceStarts: this.faceStarts,
+      faceIndices: this.faceIndices.finish(),
+      vertexAttributes,
+      faceAttributes: faceColor ? [faceColor] : [],
+    };
+  }
+}
+
+/**
+ * Colours of vertices or faces as written: RGB or RGBA, integers 0…255 or reals 0…1. Kept as
+ * uint8 when every number was written as an integer, else as float32; RGB ones get an opaque
+ * alpha when others have one.
+ */
+class ColorCollector {
+  private values: Float32Array | null = null;
+  private readonly count: number;
+  private colored = 0;
+  private hasAlpha = false;
+  private integral = true;
+
+  constructor(count: number) {
+    this.count = count;
+  }
+
+  set(i: number, source: Float64Array, integral: Uint8Array, from: number, components: number): void {
+    const values = (this.values ??= new Float32Array(4 * this.count).fill(Number.NaN));
+    for (let k = 0; k < components; k++) {
+      values[4 * i + k] = source[from + k];
+      if (!integral[from + k]) this.integral = false;
+    }
+    if (components === 4) this.hasAlpha = true;
+    this.colored++;
+  }
+
+  finish(owner: 'vertex' | 'face', notes: string[]): SoupAttribute | null {
+    const values = this.values;
+    if (!values) return null;
+    const itemSize = this.hasAlpha ? 4 : 3;
+    const uint8 = this.integral && values.every((x) => Number.isNaN(x) || (x >= 0 && x <= 255));
+    const data = uint8 ? new Uint8Array(itemSize * this.count) : new Float32Array(itemSize * this.count);
+    const opaque = uint8 ? 255 : 1;
+    for (let i = 0; i < this.count; i++) {
+      for (let k = 0; k < itemSize; k++) {
+        const x = values[4 * i + k];
+        // an element without a colour is opaque black; an RGB colour among RGBA ones is opaque
+        data[itemSize * i + k] = Number.isNaN(x) ? (k === 3 ? opaque : 0) : x;
+      }
+    }
+    const missing = this.count - this.colored;
+    if (missing > 0) {
+      const elements =
+        owner === 'vertex' ? plural(missing, 'vertex has', 'vertices have') : plural(missing, 'face has', 'faces have');
+      notes.push(`${elements} no colour (left black)`);
+    }
+    return { name: 'color', itemSize, data };
+  }
+}
+
+// -------------------------------------------------------------------------------------------------
+// Text
+
+/** What the text and binary readers give; `readOff` adds the comments and notes. */
+type OffFile = Omit<MeshFile, 'comments' | 'notes'>;
+
+function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], progress: Progress): OffFile {
+  const bytes = scanner.bytes;
+  // the counts: vertices and faces, then an optional edge count, on one line
+  if (!scanner.skipBlankLines()) scanner.fail('the file ends before the counts (vertices, faces, edges)');
+  const countsAt = scanner.location();
+  const vertexCount = scanner.integer();
+  if (scanner.atLineEnd()) scanner.fail('the counts line needs the number of vertices and of faces');
+  const faceCount = scanner.integer();
+  if (!scanner.atLineEnd()) scanner.integer();
+  scanner.endLine('the counts line holds vertices, faces and edges');
+  if (vertexCount < 0 || faceCount < 0) {
+    throw new ParseError('off', countsAt, `negative counts: ${vertexCount} vertices, ${faceCount} faces`);
+  }
+  // refuse counts the file cannot hold before allocating: a number takes at least 2 bytes
+  const numbersPerVertex = shape.dimension + (shape.homogeneous ? 1 : 0);
+  const leastBytes = 2 * (vertexCount * numbersPerVertex + faceCount * 2) - 1;
+  const bytesLeft = bytes.length - scanner.pos;
+  if (leastBytes > bytesLeft) {
+    throw new ParseError(
+      'off',
+      countsAt,
+      `the counts announce ${plural(vertexCount, 'vertex', 'vertices')} and ${plural(faceCount, 'face')}, ` +
+        `but only ${plural(bytesLeft, 'byte')} follow: far too few`,
+    );
+  }
+
+  const mesh = new OffMesh(shape, vertexCount, faceCount);
+  const values = new Float64Array(MAX_VALUES_PER_LINE);
+  const integral = new Uint8Array(MAX_VALUES_PER_LINE);
+  const fail: Fail = (reason) => scanner.fail(reason);
+  /** Reads the numbers left on this line into `values`; returns how many. */
+  const readLine = (what: string): number => {
+    let count = 0;
+    while (!scanner.atLineEnd()) {
+      if (count === MAX_VALUES_PER_LINE) scanner.fail(`${what} has more than ${MAX_VALUES_PER_LINE} numbers`);
+      values[count] = scanner.number();
+      integral[count++] = scanner.integral ? 1 : 0;
+    }
+    return count;
+  };
+
+  for (let v = 0; v < vertexCount; v++) {
+    if (!scanner.skipBlankLines()) {
+      scanner.fail(`the file ends after ${v} of ${plural(vertexCount, 'vertex', 'vertices')}`);
+    }
+    mesh.setVertex(v, values, integral, readLine(`vertex ${v}`), fail);
+    scanner.endLine(`vertex ${v} should end here`);
+  }
+  progress(scanner.pos / bytes.length);
+
+  const { faceStarts, faceIndices } = mesh;
+  for (let f = 0; f < faceCount; f++) {
+    if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${f} of ${plural(faceCount, 'face')}`);
+    if ((f & 0xffff) === 0xffff) progress(scanner.pos / bytes.length);
+    const at = scanner.pos;
+    const degree = scanner.integer();
+    if (degree < 1) scanner.fail(`face ${f} has ${degree} corners; a face needs at least one`, at);
+    if (degree > (bytes.length - scanner.pos + 1) / 2) {
+      scanner.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, at);
+    }
+    const indices = faceIndices.reserve(degree);
+    let n = faceIndices.length;
+    for (let k = 0; k < degree; k++) {
+      if (scanner.atLineEnd()) scanner.fail(`face ${f} announces ${degree} corners but lists ${k} vertex ids`);
+      const indexAt = scanner.pos;
+      const index = scanner.integer();
+      if (index < 0 || index >= vertexCount) scanner.fail(indexOutOfRange(f, index, vertexCount), indexAt);
+      indices[n++] = index;
+    }
+    faceIndices.length = n;
+    faceStarts[f + 1] = n;
+    mesh.setFaceColor(f, values, integral, readLine(`face ${f}`), fail);
+    scanner.endLine(`face ${f} should end here`);
+  }
+  if (scanner.skipBlankLines()) notes.push(`ignored the text after the last face (from line ${scanner.line})`);
+  return {
+    format: 'off',
+    encoding: 'ascii',
+    soup: mesh.finish(notes),
+    counts: { vertices: vertexCount, faces: faceCount },
+  };
+}
+
+function indexOutOfRange(f: number, index: number, vertexCount: number): string {
+  if (vertexCount === 0) return `face ${f}: vertex index ${index} refers to a vertex, but the file has none`;
+  return `face ${f}: vertex index ${index} is out of range 0..${vertexCount - 1}`;
+}
+
+// -------------------------------------------------------------------------------------------------
+// Binary
+
+interface BinaryLayout {
+  littleEndian: boolean;
+  /** Geomview's spec: each face ends with a colour count and that many floats. */
+  faceColorCount: boolean;
+}
+
+const binaryLayouts: BinaryLayout[] = [
+  { littleEndian: false, faceColorCount: true },
+  { littleEndian: true, faceColorCount: true },
+  { littleEndian: true, faceColorCount: false },
+  { littleEndian: false, faceColorCount: false },
+];
+
+function readBinaryOff(bytes: Uint8Array, start: number, shape: OffShape, notes: string[]): OffFile {
+  // try each layout; the one that ends exactly at the end of the file is the file's
+  let best: { result: BinaryResult; layout: BinaryLayout } | null = null;
+  let furthest: ParseError | null = null;
+  for (const layout of binaryLayouts) {
+    try {
+      const result = readBinaryLayout(bytes, start, shape, layout);
+      if (result.end === bytes.length) {
+        best = { result, layout };
+        break;
+      }
+      best ??= { result, layout };
+    } catch (error) {
+      if (!(error instanceof ParseError)) throw error;
+      if (!furthest || (error.location.byteOffset ?? 0) > (furthest.location.byteOffset ?? 0)) furthest = error;
+    }
+  }
+  if (!best) throw furthest!;
+  const { result, layout } = best;
+  const order = layout.littleEndian ? 'little-endian' : 'big-endian';
+  const counts = layout.faceColorCount ? 'with a colour count after each face' : 'without face colour counts';
+  const spec = layout.littleEndian || !layout.faceColorCount ? ' (the Geomview spec says big-endian, with counts)' : '';
+  notes.push(`OFF BINARY read as ${order} ${counts}${spec}`);
+  if (result.end < bytes.length) notes.push(`ignored ${plural(bytes.length - result.end, 'byte')} after the last face`);
+  return {
+    format: 'off',
+    encoding: layout.littleEndian ? 'binary_little_endian' : 'binary_big_endian',
+    soup: result.mesh.finish(notes),
+    counts: { vertices: result.vertexCount, faces: result.faceCount },
+  };
+}
+
+interface BinaryResult {
+  mesh: OffMesh;
+  vertexCount: number;
+  faceCount: number;
+  end: number;
+}
+
+function readBinaryLayout(bytes: Uint8Array, start: number, shape: OffShape, layout: BinaryLayout): BinaryResult {
+  const reader = new BinaryReader(bytes, 'off', layout.littleEndian, start);
+  reader.need(12, 'the counts (vertices, faces, edges)');
+  const vertexCount = reader.int32();
+  const faceCount = reader.int32();
+  reader.int32();
+  // every vertex is its floats (binary colours are always RGBA); every face at least a corner
+  // count and one index
+  const coordinates = shape.dimension + (shape.homogeneous ? 1 : 0);
+  const floatsPerVertex = coordinates + (shape.normals ? 3 : 0) + (shape.colors ? 4 : 0) + (shape.texcoords ? 2 : 0);
+  if (vertexCount < 0 || faceCount < 0 || 4 * (vertexCount * floatsPerVertex + 2 * faceCount) > reader.remaining) {
+    const counts = `${vertexCount} vertices, ${faceCount} faces`;
+    reader.fail(`the counts (${counts}) do not fit in the ${plural(reader.remaining, 'byte')} that follow`, start);
+  }
+  const mesh = new OffMesh(shape, vertexCount, faceCount);
+  const values = new Float64Array(MAX_VALUES_PER_LINE);
+  const integral = new Uint8Array(MAX_VALUES_PER_LINE);
+  const fail: Fail = (reason) => reader.fail(reason);
+  for (let v = 0; v < vertexCount; v++) {
+    for (let k = 0; k < floatsPerVertex; k++) values[k] = reader.float32();
+    mesh.setVertex(v, values, integral, floatsPerVertex, fail);
+  }
+  const { faceStarts, faceIndices } = mesh;
+  for (let f = 0; f < faceCount; f++) {
+    reader.need(4, `face ${f}`);
+    const degreeAt = reader.offset;
+    const degree = reader.int32();
+    if (degree < 1) reader.fail(`face ${f} has ${degree} corners; a face needs at least one`, degreeAt);
+    if (4 * degree > reader.remaining) {
+      reader.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, degreeAt);
+    }
+    const indices = faceIndices.reserve(degree);
+    let n = faceIndices.length;
+    for (let k = 0; k < degree; k++) {
+      const indexAt = reader.offset;
+      const index = reader.int32();
+      if (index < 0 || index >= vertexCount) reader.fail(indexOutOfRange(f, index, vertexCount), indexAt);
+      indices[n++] = index;
+    }
+    faceIndices.length = n;
+    faceStarts[f + 1] = n;
+    if (!layout.faceColorCount) continue;
+    const colorAt = reader.offset;
+    const colorCount = reader.int32();
+    if (colorCount < 0 || colorCount > 4) {
+      reader.fail(`face ${f} announces ${colorCount} colour components (0 to 4 expected)`, colorAt);
+    }
+    for (let k = 0; k < colorCount; k++) values[k] = reader.float32();
+    mesh.setFaceColor(f, values, integral, colorCount, fail);
+  }
+  return { mesh, vertexCount, faceCount, end: reader.offset };
+}

@@ -1,0 +1,715 @@
+/**
+ * PLY, the Stanford polygon file format: a text header that declares *elements* (tables) and
+ * their *properties* (typed columns), then the rows of every element in order, as text or as
+ * packed binary in either byte order.
+ *
+ * ```
+ * ply
+ * format binary_little_endian 1.0        ascii | binary_little_endian | binary_big_endian
+ * comment any text
+ * element vertex 8                       a table of 8 rows …
+ * property float x                       … whose columns are typed scalars
+ * property float y
+ * property float z
+ * element face 6
+ * property list uchar int vertex_indices … or lists: a count, then that many items
+ * end_header
+ * <8 vertex rows, then 6 face rows>
+ * ```
+ *
+ * A file may declare any element and property, so a reader must step over the ones it does not
+ * use; in binary that means knowing every type's size and reading every list's count. This one
+ * keeps what a halfedge mesh can carry and says in `notes` what it skipped:
+ *   - vertex `x y z` → positions (float32 when the file's are, else float64);
+ *   - vertex `nx ny nz` → `normal` (float32 × 3); `u v`, `s t` or `texture_u texture_v` →
+ *     `texcoord` (float32 × 2); `red green blue [alpha]` (or `diffuse_*`) → `color`, in the
+ *     file's type (uint8 for uchar colours, float32 for float ones);
+ *   - face `vertex_indices` (or `vertex_index`, or the only list) → faces, any degree;
+ *     face `red green blue [alpha]` → face `color`; a face list `texcoord` (two numbers per
+ *     corner) → corner `texcoord`;
+ *   - any other scalar property → an attribute under its own name, in its own type;
+ *   - a `tristrips` element (strips of vertex ids, -1 between strips) → triangles.
+ *
+ * Before anything is allocated, every element's row count is checked against the bytes left, so
+ * a 40-byte file that claims two billion faces is refused at once.
+ */
+import { attributeArrayTypes, type AttributeType } from '../attributes.js';
+import { ParseError } from '../errors.js';
+import { plural } from '../report.js';
+import type { SoupAttribute } from '../soup.js';
+import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes } from './binary.js';
+import { GrowableArray } from './growable.js';
+import { type Encoding, type MeshFile, noteNonFinitePositions, type Progress } from './mesh-file.js';
+import { TextScanner } from './text.js';
+
+/** Every PLY type name, old (`uchar`) and new (`uint8`), and the type of the values it holds. */
+const plyTypeNames: Record<string, AttributeType> = {
+  char: 'int8',
+  int8: 'int8',
+  uchar: 'uint8',
+  uint8: 'uint8',
+  short: 'int16',
+  int16: 'int16',
+  ushort: 'uint16',
+  uint16: 'uint16',
+  int: 'int32',
+  int32: 'int32',
+  uint: 'uint32',
+  uint32: 'uint32',
+  float: 'float32',
+  float32: 'float32',
+  double: 'float64',
+  float64: 'float64',
+};
+
+const encodings: readonly Encoding[] = ['ascii', 'binary_little_endian', 'binary_big_endian'];
+
+/** Property names that make up one attribute, first spelling first. */
+const normalNames = [['nx', 'ny', 'nz']];
+const colorNames = [
+  ['red', 'green', 'blue', 'alpha'],
+  ['diffuse_red', 'diffuse_green', 'diffuse_blue', 'diffuse_alpha'],
+];
+const texcoordNames = [
+  ['u', 'v'],
+  ['s', 't'],
+  ['texture_u', 'texture_v'],
+  ['texture_s', 'texture_t'],
+];
+/** Names the soup gives its own meaning; a scalar property of the same name would clash. */
+const reservedNames = new Set(['position', 'normal', 'color', 'texcoord']);
+
+interface PlyProperty {
+  name: string;
+  type: ScalarType;
+  /** The type of a list's count; null for a scalar property. */
+  countType: ScalarType | null;
+}
+
+interface PlyElement {
+  name: string;
+  count: number;
+  properties: PlyProperty[];
+  /** Header line that declares it, for messages. */
+  line: number;
+}
+
+interface PlyHeader {
+  encoding: Encoding;
+  elements: PlyElement[];
+  comments: string[];
+  notes: string[];
+  /** Byte offset and line number where the data begins. */
+  bodyStart: number;
+  bodyLine: number;
+}
+
+/**
+ * Reads a PLY file (any of the three encodings) into a polygon soup.
+ * @throws ParseError with the line (header, ascii data) or byte offset (binary data).
+ */
+export function readPly(bytes: Uint8Array, progress: Progress): MeshFile {
+  const header = readHeader(bytes);
+  checkCountsFit(header, bytes.length);
+  const plan = planElements(header);
+  if (header.encoding === 'ascii') readAsciiBody(bytes, header, plan, progress);
+  else readBinaryBody(bytes, header, plan, progress);
+  return assemble(header, plan);
+}
+
+// -------------------------------------------------------------------------------------------------
+// The header
+
+function readHeader(bytes: Uint8Array): PlyHeader {
+  const scanner = new TextScanner(bytes, 'ply');
+  if (scanner.word() !== 'ply') scanner.fail("a PLY file starts with the line 'ply'", 0);
+  scanner.endLine("the first line should be just 'ply'");
+  if (indexOfText(bytes, 'end_header') < 0) {
+    const reason = "the file ends before 'end_header': the header is cut off";
+    throw new ParseError('ply', { byteOffset: bytes.length }, reason);
+  }
+  const elements: PlyElement[] = [];
+  const comments: string[] = [];
+  const notes: string[] = [];
+  let encoding: Encoding | null = null;
+
+  const nextType = (): ScalarType => {
+    scanner.skipSpaces();
+    const at = scanner.pos;
+    const name = scanner.word();
+    const type = plyTypeNames[name];
+    if (type === undefined) {
+      const types = 'char, uchar, short, ushort, int, uint, float, double, or int8 … float64';
+      scanner.fail(`unknown property type '${scanner.token(at)}' (PLY types: ${types})`, at);
+    }
+    return scalarTypes[type];
+  };
+
+  for (;;) {
+    if (!scanner.skipBlankLines()) scanner.fail("the header has no 'end_header' line");
+    const line = scanner.line;
+    const start = scanner.pos;
+    const keyword = scanner.word();
+    if (keyword === 'end_header') break;
+    switch (keyword) {
+      case 'format': {
+        const at = scanner.pos + 1;
+        const name = scanner.word();
+        if (!encodings.includes(name as Encoding)) {
+          scanner.fail(`unknown format '${name}': PLY data is ascii, binary_little_endian or binary_big_endian`, at);
+        }
+        encoding = name as Encoding;
+        const version = scanner.word();
+        if (version !== '1.0') notes.push(`the header gives PLY version '${version}'; read as version 1.0`);
+        scanner.endLine('the format line should end after the version');
+        break;
+      }
+      case 'comment':
+        comments.push(scanner.restOfLine());
+        scanner.nextLine();
+        break;
+      case 'obj_info':
+        comments.push(`obj_info ${scanner.restOfLine()}`.trim());
+        scanner.nextLine();
+        break;
+      case 'element': {
+        const name = scanner.word();
+        if (!name) scanner.fail('an element needs a name and a row count');
+        const at = scanner.pos + 1;
+        const count = scanner.integer();
+        if (count < 0) scanner.fail(`element '${name}' cannot have ${count} rows`, at);
+        scanner.endLine(`the element line should end after the row count`);
+        elements.push({ name, count, properties: [], line });
+        break;
+      }
+      case 'property': {
+        const element = elements[elements.length - 1];
+        if (!element) scanner.fail("a 'property' line comes before any 'element' line", start);
+        scanner.skipSpaces();
+        const listAt = scanner.pos;
+        let countType: ScalarType | null = null;
+        if (scanner.word() === 'list') {
+          countType = nextType();
+          if (countType.type.startsWith('float')) {
+            scanner.fail(`a list's count must have an integer type, not ${countType.type}`, listAt);
+          }
+        } else {
+          scanner.pos = listAt;
+        }
+        const type = nextType();
+        const name = scanner.word();
+        if (!name) scanner.fail('the property needs a name after its type');
+        scanner.endLine(`the property line should end after the name '${name}'`);
+        element.properties.push({ name, type, countType });
+        break;
+      }
+      default: {
+        // a line without a keyword (Blender 2.47 wrote its banner so): keep the text, go on
+        scanner.pos = start;
+        const text = scanner.restOfLine();
+        comments.push(text);
+        notes.push(`header line ${line} has no PLY keyword ('${text.slice(0, 40)}'): kept as a comment`);
+        scanner.nextLine();
+      }
+    }
+  }
+  if (encoding === null) return scanner.fail("the header has no 'format' line (such as 'format ascii 1.0')");
+
+  // after end_header come optional spaces and exactly one line ending: a binary body may well
+  // start with the byte 0x0A, which must not be taken for a second line ending
+  let bodyStart = scanner.pos;
+  while (bytes[bodyStart] === 0x20 || bytes[bodyStart] === 0x09) bodyStart++;
+  if (bytes[bodyStart] === 0x0d) bodyStart++;
+  if (bytes[bodyStart] === 0x0a) bodyStart++;
+  return { encoding, elements, comments, notes, bodyStart, bodyLine: scanner.line + 1 };
+}
+
+function indexOfText(bytes: Uint8Array, text: string): number {
+  const first = text.charCodeAt(0);
+  search: for (let i = bytes.indexOf(first); i >= 0; i = bytes.indexOf(first, i + 1)) {
+    for (let k = 1; k < text.length; k++) if (bytes[i + k] !== text.charCodeAt(k)) continue search;
+    return i;
+  }
+  return -1;
+}
+
+/**
+ * Refuses row counts the file cannot hold, before anything is allocated: a binary row needs at
+ * least its scalars and list counts, an ascii value at least one digit and one separator.
+ */
+function checkCountsFit(header: PlyHeader, fileBytes: number): void {
+  const available = fileBytes - header.bodyStart;
+  const ascii = header.encoding === 'ascii';
+  let needed = 0;
+  for (const element of header.elements) {
+    let rowBytes = 0;
+    for (const { type, countType } of element.properties) {
+      if (ascii) rowBytes += 2;
+      else rowBytes += countType ? countType.size : type.size;
+    }
+    const before = needed;
+    needed += element.count * rowBytes;
+    if (needed > available + 1) {
+      const row = ascii ? plural(element.properties.length, 'value') : `at least ${plural(rowBytes, 'byte')}`;
+      const most = Math.max(0, Math.floor((available + 1 - before) / rowBytes));
+      throw new ParseError(
+        'ply',
+        { line: element.line },
+        `element '${element.name}' announces ${element.count} rows of ${row}, but the ${plural(available, 'byte')} ` +
+          `of data hold at most ${most} of them`,
+      );
+    }
+  }
+}
+
+// -------------------------------------------------------------------------------------------------
+// Where each property's values go
+
+type ListItems = Uint32Array<ArrayBuffer> | Int32Array<ArrayBuffer> | Float32Array<ArrayBuffer>;
+
+/** The items of one list property, row after row (CSR, like the soup's faces). */
+class ListCollector<T extends ListItems = ListItems> {
+  readonly starts: Uint32Array;
+  readonly items: GrowableArray<T>;
+  /** Items outside `min … max` are an error (vertex ids must exist; -1 separates strips). */
+  readonly min: number;
+  readonly max: number;
+  /** Vertex indices (faces, strips) rather than values (texture coordinates). */
+  readonly holdsIndices: boolean;
+
+  constructor(rows: number, make: (n: number) => T, min: number, max: number) {
+    this.starts = new Uint32Array(rows + 1);
+    this.items = new GrowableArray(make, 3 * rows);
+    this.min = min;
+    this.max = max;
+    this.holdsIndices = Number.isFinite(min);
+  }
+}
+
+interface PropertyPlan {
+  property: PlyProperty;
+  /** A list whose count is a uchar (almost all of them). */
+  countIsByte: boolean;
+  /** A scalar's destination: value of row r at `target[r × stride + offset]`; null to skip it. */
+  target: NumberTarget | null;
+  stride: number;
+  offset: number;
+  /** A list's destination; null to skip it. */
+  list: ListCollector | null;
+}
+
+interface ElementPlan {
+  element: PlyElement;
+  properties: PropertyPlan[];
+  /** Bytes per binary row when every property is a scalar; -1 when rows hold lists. */
+  rowBytes: number;
+}
+
+interface Plan {
+  elements: ElementPlan[];
+  positions: Float32Array | Float64Array;
+  vertexAttributes: SoupAttribute[];
+  faceAttributes: SoupAttribute[];
+  faces: ListCollector<Uint32Array<ArrayBuffer>> | null;
+  /** Per-face texture coordinates, two per corner. */
+  faceTexcoords: ListCollector<Float32Array<ArrayBuffer>> | null;
+  strips: ListCollector<Int32Array<ArrayBuffer>> | null;
+  notes: string[];
+}
+
+function planElements(header: PlyHeader): Plan {
+  const notes = header.notes;
+  const vertexElement = header.elements.find((e) => e.name === 'vertex');
+  const vertexCount = vertexElement?.count ?? 0;
+  const hasFaces = header.elements.some((e) => e.name === 'face');
+  const plan: Plan = {
+    elements: [],
+    positions: new Float64Array(0),
+    vertexAttributes: [],
+    faceAttributes: [],
+    faces: null,
+    faceTexcoords: null,
+    strips: null,
+    notes,
+  };
+
+  for (const element of header.elements) {
+    const properties = element.properties.map(
+      (property): PropertyPlan => ({
+        property,
+        countIsByte: property.countType?.type === 'uint8',
+        target: null,
+        stride: 1,
+        offset: 0,
+        list: null,
+      }),
+    );
+    const rows = element.count;
+    const lists = properties.filter((p) => p.property.countType !== null);
+    if (element.name === 'vertex') {
+      const xyz = findGroup(properties, [['x', 'y', 'z']], 3);
+      if (!xyz) {
+        const missing = ['x', 'y', 'z'].find((name) => !properties.some((p) => p.property.name === name));
+        throw new ParseError('ply', { line: element.line }, `element 'vertex' has no scalar property '${missing}'`);
+      }
+      const float32 = xyz.every((p) => p.property.type.type === 'float32');
+      plan.positions = float32 ? new Float32Array(3 * rows) : new Float64Array(3 * rows);
+      route(xyz, plan.positions, 3);
+      planAttributes(element, properties, plan.vertexAttributes, notes, true);
+      for (const list of lists) notes.push(`skipped vertex list property '${list.property.name}'`);
+    } else if (element.name === 'face') {
+      const faceList =
+        lists.find((p) => p.property.name === 'vertex_indices' || p.property.name === 'vertex_index') ??
+        (lists.length === 1 ? lists[0] : undefined);
+      if (faceList) {
+        requireIntegers(element, faceList);
+        faceList.list = plan.faces = new ListCollector(rows, (n) => new Uint32Array(n), 0, vertexCount - 1);
+      } else {
+        notes.push(`element 'face' has no list of vertex indices: no faces read`);
+      }
+      const texcoords = lists.find((p) => p.property.name === 'texcoord' || p.property.name === 'texcoords');
+      if (texcoords && texcoords !== faceList) {
+        texcoords.list = plan.faceTexcoords = new ListCollector(rows, (n) => new Float32Array(n), -Infinity, Infinity);
+      }
+      for (const list of lists) {
+        if (list !== faceList && list !== texcoords) notes.push(`skipped face list property '${list.property.name}'`);
+      }
+      planAttributes(element, properties, plan.faceAttributes, notes, false);
+    } else if (element.name === 'tristrips' && !hasFaces && lists.length > 0) {
+      const stripList = lists.find((p) => p.property.name === 'vertex_indices') ?? lists[0];
+      requireIntegers(element, stripList);
+      stripList.list = plan.strips = new ListCollector(rows, (n) => new Int32Array(n), -1, vertexCount - 1);
+    } else {
+      notes.push(`skipped element '${element.name}' (${plural(rows, 'row')})`);
+    }
+    const rowBytes = lists.length > 0 ? -1 : properties.reduce((sum, p) => sum + p.property.type.size, 0);
+    plan.elements.push({ element, properties, rowBytes });
+  }
+  if (!vertexElement) {
+    const names = header.elements.map((e) => `${e.name}(${e.count})`).join(', ') || 'none';
+    notes.push(`no 'vertex' element (elements: ${names}): nothing to show`);
+  }
+  return plan;
+}
+
+function requireIntegers(element: PlyElement, p: PropertyPlan): void {
+  const { name, type } = p.property;
+  if (type.type.startsWith('float')) {
+    const reason = `the vertex indices '${name}' of element '${element.name}' are ${type.type}, not integers`;
+    throw new ParseError('ply', { line: element.line }, reason);
+  }
+}
+
+/** Sends each property of `group` to `target`, interleaved `stride` per row. */
+function route(group: PropertyPlan[], target: NumberTarget, stride: number): void {
+  group.forEach((p, k) => {
+    p.target = target;
+    p.stride = stride;
+    p.offset = k;
+  });
+}
+
+/**
+ * The scalar properties named by one of `spellings` (the first `required` names must all be
+ * there; the rest are optional and kept only in order), or null.
+ */
+function findGroup(properties: PropertyPlan[], spellings: string[][], required: number): PropertyPlan[] | null {
+  const scalar = (name: string) => properties.find((p) => p.property.name === name && p.property.countType === null);
+  for (const names of spellings) {
+    const group: PropertyPlan[] = [];
+    for (const name of names) {
+      const p = scalar(name);
+      if (!p) break;
+      group.push(p);
+    }
+    if (group.length >= required) return group;
+  }
+  return null;
+}
+
+/** Plans a vertex or face element's attributes: normal, colour, texcoord, then any other scalar. */
+function planAttributes(
+  element: PlyElement,
+  properties: PropertyPlan[],
+  attributes: SoupAttribute[],
+  notes: string[],
+  isVertex: boolean,
+): void {
+  const rows = element.count;
+  const add = (name: string, group: PropertyPlan[], type: AttributeType) => {
+    const data = new attributeArrayTypes[type](rows * group.length);
+    route(group, data, group.length);
+    attributes.push({ name, itemSize: group.length, data });
+  };
+  if (isVertex) {
+    const normal = findGroup(properties, normalNames, 3);
+    if (normal) add('normal', normal, 'float32');
+    const texcoord = findGroup(properties, texcoordNames, 2);
+    if (texcoord) add('texcoord', texcoord, 'float32');
+  }
+  const color = findGroup(properties, colorNames, 3);
+  if (color) add('color', color, color[0].property.type.type);
+
+  const kept: string[] = [];
+  for (const p of properties) {
+    const { name, type, countType } = p.property;
+    if (p.target || countType !== null) continue;
+    if (reservedNames.has(name) || attributes.some((a) => a.name === name)) {
+      notes.push(`skipped ${element.name} property '${name}': the name is taken`);
+      continue;
+    }
+    add(name, [p], type.type);
+    kept.push(`'${name}'`);
+  }
+  if (kept.length === 1) notes.push(`kept ${element.name} property ${kept[0]} as an attribute`);
+  if (kept.length > 1) notes.push(`kept ${element.name} properties ${kept.join(', ')} as attributes`);
+}
+
+// -------------------------------------------------------------------------------------------------
+// The data
+
+function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progress: Progress): void {
+  const scanner = new TextScanner(bytes, 'ply', { start: header.bodyStart, line: header.bodyLine });
+  for (const { element, properties } of plan.elements) {
+    const { name, count: rows } = element;
+    if (properties.length === 0) continue;
+    for (let row = 0; row < rows; row++) {
+      if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${row} of ${rows} rows of element '${name}'`);
+      if ((row & 0xffff) === 0xffff) progress(scanner.pos / bytes.length);
+      for (let i = 0; i < properties.length; i++) {
+        const p = properties[i];
+        if (scanner.atLineEnd()) {
+          scanner.fail(`row ${row} of element '${name}' ends before its property '${p.property.name}'`);
+        }
+        if (p.property.countType === null) {
+          const value = scanner.number();
+          if (p.target) p.target[row * p.stride + p.offset] = value;
+          continue;
+        }
+        const countAt = scanner.pos;
+        const count = scanner.integer();
+        if (count < 0) scanner.fail(`row ${row} of element '${name}': a list cannot have ${count} items`, countAt);
+        if (count > (bytes.length - scanner.pos + 1) / 2) {
+          const reason = `the list announces ${count} items, more than the rest of the file holds`;
+          scanner.fail(`row ${row} of element '${name}': ${reason}`, countAt);
+        }
+        const list = p.list;
+        if (list === null) {
+          for (let k = 0; k < count; k++) {
+            if (scanner.atLineEnd()) scanner.fail(listEndsEarly(element, row, p, count, k));
+            scanner.number();
+          }
+          continue;
+        }
+        const items = list.items.reserve(count);
+        let n = list.items.length;
+        for (let k = 0; k < count; k++) {
+          if (scanner.atLineEnd()) scanner.fail(listEndsEarly(element, row, p, count, k));
+          const at = scanner.pos;
+          const value = list.holdsIndices ? scanner.integer() : scanner.number();
+          if (value < list.min || value > list.max) scanner.fail(outOfRange(element, row, value, list), at);
+          items[n++] = value;
+        }
+        list.items.length = n;
+        list.starts[row + 1] = n;
+      }
+      const declared = plural(properties.length, 'property', 'properties');
+      scanner.endLine(`row ${row} of element '${name}' should end after its ${declared}`);
+    }
+  }
+  if (scanner.skipBlankLines()) plan.notes.push(`ignored the text after the last element (from line ${scanner.line})`);
+}
+
+function readBinaryBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progress: Progress): void {
+  const littleEndian = header.encoding === 'binary_little_endian';
+  const reader = new BinaryReader(bytes, 'ply', littleEndian);
+  const { view } = reader;
+  const fail = (reason: string, at: number) => reader.fail(reason, at);
+  const end = bytes.length;
+  // the cursor lives in a local for speed: every read below is checked against `end` first
+  let offset = header.bodyStart;
+  for (const { element, properties, rowBytes } of plan.elements) {
+    const { name, count: rows } = element;
+    progress(offset / end);
+    if (properties.length === 0) continue;
+    if (rowBytes >= 0) {
+      // rows of scalars only: a table with fixed columns, read column by column
+      const fullRows = Math.floor((end - offset) / rowBytes);
+      if (fullRows < rows) {
+        fail(`the file ends after ${fullRows} of ${rows} rows of element '${name}'`, offset + fullRows * rowBytes);
+      }
+      let column = offset;
+      for (const p of properties) {
+        const { type } = p.property;
+        if (p.target) type.readRun(view, column, rowBytes, rows, littleEndian, p.target, p.offset, p.stride);
+        column += type.size;
+      }
+      offset += rows * rowBytes;
+      continue;
+    }
+    for (let row = 0; row < rows; row++) {
+      if ((row & 0xffff) === 0xffff) progress(offset / end);
+      for (let i = 0; i < properties.length; i++) {
+        const p = properties[i];
+        const { type, countType } = p.property;
+        const size = type.size;
+        if (countType === null) {
+          if (offset + size > end) fail(`the file ends inside row ${row} of ${rows} of element '${name}'`, offset);
+          if (p.target) p.target[row * p.stride + p.offset] = type.read(view, offset, littleEndian);
+          offset += size;
+          continue;
+        }
+        if (offset + countType.size > end) {
+          fail(`the file ends inside row ${row} of ${rows} of element '${name}'`, offset);
+        }
+        // most lists count in a uchar: read it straight from the bytes, sparing a call per row
+        const count = p.countIsByte ? bytes[offset] : countType.read(view, offset, littleEndian);
+        if (count < 0) fail(`row ${row} of element '${name}': a list cannot have ${count} items`, offset);
+        offset += countType.size;
+        if (offset + count * size > end) {
+          fail(
+            `the file ends inside row ${row} of ${rows} of element '${name}', whose list '${p.property.name}' ` +
+              `announces ${count} items`,
+            offset - countType.size,
+          );
+        }
+        const list = p.list;
+        if (list === null) {
+          offset += count * size;
+          continue;
+        }
+        const items = list.items.reserve(count);
+        const first = list.items.length;
+        type.readRun(view, offset, size, count, littleEndian, items, first, 1);
+        for (let k = first; k < first + count; k++) {
+          if (items[k] < list.min || items[k] > list.max) {
+            // the list's array may have wrapped the value (-1 in a Uint32Array): report what the file says
+            const at = offset + (k - first) * size;
+            fail(outOfRange(element, row, type.read(view, at, littleEndian), list), at);
+          }
+        }
+        offset += count * size;
+        list.items.length = first + count;
+        list.starts[row + 1] = first + count;
+      }
+    }
+  }
+  if (offset < end) plan.notes.push(`ignored ${plural(end - offset, 'byte')} after the last element`);
+}
+
+function listEndsEarly(element: PlyElement, row: number, p: PropertyPlan, count: number, found: number): string {
+  const list = `the list '${p.property.name}' announces ${count} items, but the line ends after ${found}`;
+  return `row ${row} of element '${element.name}': ${list}`;
+}
+
+/** Only lists of vertex indices have a range (faces, strips). */
+function outOfRange(element: PlyElement, row: number, value: number, list: ListCollector): string {
+  const what = element.name === 'face' ? `face ${row}` : `row ${row} of element '${element.name}'`;
+  if (list.max < 0) return `${what}: vertex index ${value} refers to a vertex, but the file has none`;
+  return `${what}: vertex index ${value} is out of range ${list.min === -1 ? '-1 (strip end), 0' : '0'}..${list.max}`;
+}
+
+// -------------------------------------------------------------------------------------------------
+// The soup
+
+function assemble(header: PlyHeader, plan: Plan): MeshFile {
+  const { notes } = plan;
+  const positions = plan.positions;
+  const vertexCount = positions.length / 3;
+  let faceStarts: Uint32Array;
+  let faceIndices: Uint32Array;
+  const cornerAttributes: SoupAttribute[] = [];
+  if (plan.faces) {
+    faceStarts = plan.faces.starts;
+    faceIndices = plan.faces.items.finish();
+    const texcoords = plan.faceTexcoords;
+    if (texcoords) {
+      const mismatch = firstTexcoordMismatch(faceStarts, texcoords.starts);
+      if (mismatch < 0) {
+        cornerAttributes.push({ name: 'texcoord', itemSize: 2, data: texcoords.items.finish() });
+      } else {
+        const corners = faceStarts[mismatch + 1] - faceStarts[mismatch];
+        const values = texcoords.starts[mismatch + 1] - texcoords.starts[mismatch];
+        notes.push(
+          `face ${mismatch} has ${corners} corners but ${values} texture coordinates (${2 * corners} expected): ` +
+            'per-face texture coordinates skipped',
+        );
+      }
+    }
+  } else if (plan.strips) {
+    ({ faceStarts, faceIndices } = decodeStrips(plan.strips, notes));
+  } else {
+    faceStarts = new Uint32Array(1);
+    faceIndices = new Uint32Array(0);
+  }
+  const faceCount = faceStarts.length - 1;
+  if (vertexCount > 0 && faceCount === 0) notes.push('no faces: loaded as a point set');
+  noteNonFinitePositions(positions, notes);
+  return {
+    format: 'ply',
+    encoding: header.encoding,
+    soup: {
+      positions,
+      faceStarts,
+      faceIndices,
+      vertexAttributes: plan.vertexAttributes,
+      faceAttributes: plan.faces ? plan.faceAttributes : [],
+      cornerAttributes,
+    },
+    counts: { vertices: vertexCount, faces: faceCount },
+    comments: header.comments,
+    notes,
+  };
+}
+
+/** The first face whose texture coordinates are not two per corner, or -1. */
+function firstTexcoordMismatch(faceStarts: Uint32Array, texcoordStarts: Uint32Array): number {
+  for (let f = 0; f + 1 < faceStarts.length; f++) {
+    if (texcoordStarts[f + 1] - texcoordStarts[f] !== 2 * (faceStarts[f + 1] - faceStarts[f])) return f;
+  }
+  return -1;
+}
+
+/**
+ * A triangle strip a b c d e … makes the triangles (a b c), (c b d), (c d e), …: every second one
+ * is turned round so all keep the strip's orientation. -1 ends a strip; triangles with a repeated
+ * vertex (used in strips to turn corners) are left out.
+ */
+function decodeStrips(
+  strips: ListCollector<Int32Array<ArrayBuffer>>,
+  notes: string[],
+): { faceStarts: Uint32Array; faceIndices: Uint32Array } {
+  const items = strips.items.finish();
+  const corners = new GrowableArray((n) => new Uint32Array(n), items.length * 3);
+  let stripCount = 0;
+  let skipped = 0;
+  let runStart = 0;
+  for (let i = 0; i <= items.length; i++) {
+    if (i < items.length && items[i] !== -1) continue;
+    // items[runStart … i) is one strip
+    if (i > runStart) stripCount++;
+    for (let k = runStart + 2; k < i; k++) {
+      const a = items[k - 2];
+      const b = items[k - 1];
+      const c = items[k];
+      if (a === b || b === c || a === c) {
+        skipped++;
+        continue;
+      }
+      const odd = (k - runStart) % 2 === 1;
+      corners.push(odd ? b : a);
+      corners.push(odd ? a : b);
+      corners.push(c);
+    }
+    runStart = i + 1;
+  }
+  const faceIndices = corners.finish();
+  const triangles = faceIndices.length / 3;
+  const faceStarts = new Uint32Array(triangles + 1);
+  for (let f = 1; f <= triangles; f++) faceStarts[f] = 3 * f;
+  notes.push(
+    `decoded ${plural(stripCount, 'triangle strip')} into ${plural(triangles, 'triangle')}` +
+      (skipped > 0 ? ` (${skipped} degenerate left out)` : ''),
+  );
+  return { faceStarts, faceIndices };
+}

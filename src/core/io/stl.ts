@@ -1,0 +1,226 @@
+/**
+ * STL (stereolithography): a bare list of triangles, each with a facet normal and its corners
+ * written out in full. No vertex is shared: a cube's 12 triangles carry 36 corners for its 8
+ * vertices.
+ *
+ * ```
+ * ascii:   solid name
+ *            facet normal nx ny nz
+ *              outer loop
+ *                vertex x y z      (three times)
+ *              endloop
+ *            endfacet
+ *          endsolid name
+ * binary:  an 80-byte header, a uint32 triangle count n, then 50 bytes per triangle (normal and
+ *          3 corners as 12 little-endian float32, then a 2-byte attribute): 84 + 50·n bytes.
+ * ```
+ *
+ * A binary header may itself begin with "solid", so the size rule decides first. A halfedge mesh
+ * needs shared vertices: corners at exactly the same position are welded into one vertex, found
+ * in linear time by hashing the bits of the three coordinates. Facet normals are kept as the face
+ * attribute `normal`.
+ */
+import { plural } from '../report.js';
+import { BinaryReader, viewOf } from './binary.js';
+import { GrowableArray } from './growable.js';
+import { type MeshFile, noteNonFinitePositions, type Progress } from './mesh-file.js';
+import { TextScanner, decodeText } from './text.js';
+
+const HEADER_BYTES = 80;
+const TRIANGLE_BYTES = 50;
+
+/** True when the size is exactly what the triangle count after the 80-byte header makes. */
+export function isBinaryStl(bytes: Uint8Array): boolean {
+  if (bytes.length < HEADER_BYTES + 4) return false;
+  const triangles = viewOf(bytes).getUint32(HEADER_BYTES, true);
+  return HEADER_BYTES + 4 + TRIANGLE_BYTES * triangles === bytes.length;
+}
+
+/** Starts with "solid" and has no control bytes early on (binary floats are full of zero bytes). */
+function looksLikeAsciiStl(bytes: Uint8Array): boolean {
+  const start = bytes.subarray(0, 512);
+  return /^\s*solid\b/.test(decodeText(start, 0, 64)) && start.every((b) => b >= 9);
+}
+
+/**
+ * Reads an STL file (ascii or binary) and welds its corners into shared vertices.
+ * @throws ParseError with the line (ascii) or byte offset (binary).
+ */
+export function readStl(bytes: Uint8Array, progress: Progress): MeshFile {
+  const ascii = !isBinaryStl(bytes) && looksLikeAsciiStl(bytes);
+  const comments: string[] = [];
+  const notes: string[] = [];
+  const triangles = ascii ? readAscii(bytes, comments, progress) : readBinary(bytes, comments, notes);
+  const { corners, faceStarts, normals } = triangles;
+  const cornerCount = corners.length / 3;
+  const { positions, indices } = weldCorners(corners);
+  const vertexCount = positions.length / 3;
+  const welded = `${plural(cornerCount, 'STL corner')} into ${plural(vertexCount, 'vertex', 'vertices')}`;
+  notes.push(`welded ${welded} (${cornerCount - vertexCount} merged)`);
+  noteNonFinitePositions(positions, notes);
+  const faceCount = faceStarts.length - 1;
+  return {
+    format: 'stl',
+    encoding: ascii ? 'ascii' : 'binary_little_endian',
+    soup: {
+      positions,
+      faceStarts,
+      faceIndices: indices,
+      faceAttributes: [{ name: 'normal', itemSize: 3, data: normals }],
+    },
+    counts: { vertices: vertexCount, faces: faceCount },
+    comments,
+    notes,
+  };
+}
+
+interface Triangles {
+  /** x y z of every corner, face after face. */
+  corners: Float32Array<ArrayBuffer>;
+  faceStarts: Uint32Array;
+  normals: Float32Array<ArrayBuffer>;
+}
+
+function readBinary(bytes: Uint8Array, comments: string[], notes: string[]): Triangles {
+  const reader = new BinaryReader(bytes, 'stl', true, HEADER_BYTES);
+  reader.need(4, 'the 80-byte header and the triangle count of a binary STL');
+  const header = bytes.subarray(0, HEADER_BYTES);
+  if (header.every((b) => b === 0 || (b >= 32 && b < 127))) {
+    const text = decodeText(header).replace(/\0/g, '').trim();
+    if (text) comments.push(text);
+  }
+  const count = reader.uint32();
+  const fullTriangles = Math.floor(reader.remaining / TRIANGLE_BYTES);
+  if (fullTriangles < count) {
+    const at = reader.offset + fullTriangles * TRIANGLE_BYTES;
+    reader.fail(`the file ends after ${fullTriangles} of ${plural(count, 'triangle')}`, at);
+  }
+  if (reader.remaining > count * TRIANGLE_BYTES) {
+    notes.push(`ignored ${plural(reader.remaining - count * TRIANGLE_BYTES, 'byte')} after the last triangle`);
+  }
+  const corners = new Float32Array(9 * count);
+  const normals = new Float32Array(3 * count);
+  const view = reader.view;
+  for (let t = 0; t < count; t++) {
+    const offset = reader.offset + t * TRIANGLE_BYTES;
+    for (let k = 0; k < 3; k++) normals[3 * t + k] = view.getFloat32(offset + 4 * k, true);
+    for (let k = 0; k < 9; k++) corners[9 * t + k] = view.getFloat32(offset + 12 + 4 * k, true);
+  }
+  const faceStarts = new Uint32Array(count + 1);
+  for (let t = 1; t <= count; t++) faceStarts[t] = 3 * t;
+  return { corners, faceStarts, normals };
+}
+
+function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): Triangles {
+  const scanner = new TextScanner(bytes, 'stl');
+  const corners = new GrowableArray((n) => new Float32Array(n), bytes.length >> 5);
+  const normals = new GrowableArray((n) => new Float32Array(n), bytes.length >> 7);
+  const faceStarts = new GrowableArray((n) => new Uint32Array(n), bytes.length >> 8);
+  faceStarts.push(0);
+  /** Reads the next word, which must be `expected`. */
+  const expect = (expected: string): void => {
+    if (!scanner.skipBlankLines()) scanner.fail(`the file ends where '${expected}' should come`);
+    const at = scanner.pos;
+    if (scanner.word().toLowerCase() !== expected) {
+      scanner.fail(`expected '${expected}', found '${scanner.token(at)}'`, at);
+    }
+  };
+  const readPoint = (target: GrowableArray<Float32Array<ArrayBuffer>>, what: string): void => {
+    for (let k = 0; k < 3; k++) {
+      if (scanner.atLineEnd()) scanner.fail(`${what} needs 3 numbers`);
+      target.push(scanner.number());
+    }
+    scanner.endLine(`${what} should end after 3 numbers`);
+  };
+
+  expect('solid');
+  comments.push(`solid ${scanner.restOfLine()}`.trim());
+  for (;;) {
+    if (!scanner.skipBlankLines()) scanner.fail("the file ends before 'endsolid'");
+    const at = scanner.pos;
+    const keyword = scanner.word().toLowerCase();
+    if (keyword === 'endsolid') {
+      scanner.nextLine();
+      // some files hold several solids one after the other
+      if (!scanner.skipBlankLines()) break;
+      expect('solid');
+      comments.push(`solid ${scanner.restOfLine()}`.trim());
+      continue;
+    }
+    if (keyword !== 'facet') scanner.fail(`expected 'facet' or 'endsolid', found '${scanner.token(at)}'`, at);
+    const facet = faceStarts.length - 1;
+    if ((facet & 0xffff) === 0xffff) progress(scanner.pos / bytes.length);
+    expect('normal');
+    readPoint(normals, `the normal of facet ${facet}`);
+    expect('outer');
+    expect('loop');
+    let cornerCount = 0;
+    for (;;) {
+      if (!scanner.skipBlankLines()) scanner.fail(`the file ends inside facet ${facet}`);
+      const wordAt = scanner.pos;
+      const word = scanner.word().toLowerCase();
+      if (word === 'endloop') break;
+      if (word !== 'vertex') {
+        scanner.fail(`expected 'vertex' or 'endloop' in facet ${facet}, found '${scanner.token(wordAt)}'`, wordAt);
+      }
+      readPoint(corners, `vertex ${cornerCount} of facet ${facet}`);
+      cornerCount++;
+    }
+    if (cornerCount === 0) scanner.fail(`facet ${facet} has no vertices`);
+    expect('endfacet');
+    faceStarts.push(corners.length / 3);
+  }
+  return { corners: corners.finish(), faceStarts: faceStarts.finish(), normals: normals.finish() };
+}
+
+/**
+ * Merges corners at exactly the same position into one vertex, keeping first-seen order: an open
+ * addressing hash table keyed by the three coordinates' bits (-0 counted as 0), so the work is
+ * linear and no position is turned into a string.
+ */
+function weldCorners(corners: Float32Array<ArrayBuffer>): {
+  positions: Float32Array<ArrayBuffer>;
+  indices: Uint32Array<ArrayBuffer>;
+} {
+  const cornerCount = corners.length / 3;
+  for (let i = 0; i < corners.length; i++) if (corners[i] === 0) corners[i] = 0;
+  const bits = new Uint32Array(corners.buffer, corners.byteOffset, corners.length);
+  let size = 2;
+  while (size < 2 * cornerCount) size *= 2;
+  const mask = size - 1;
+  const table = new Int32Array(size).fill(-1);
+  const positions = new Float32Array(corners.length);
+  const positionBits = new Uint32Array(positions.buffer);
+  const indices = new Uint32Array(cornerCount);
+  let vertexCount = 0;
+  for (let c = 0; c < cornerCount; c++) {
+    const x = bits[3 * c];
+    const y = bits[3 * c + 1];
+    const z = bits[3 * c + 2];
+    let slot = hashBits(x, y, z) & mask;
+    for (;;) {
+      const v = table[slot];
+      if (v === -1) {
+        table[slot] = vertexCount;
+        positionBits[3 * vertexCount] = x;
+        positionBits[3 * vertexCount + 1] = y;
+        positionBits[3 * vertexCount + 2] = z;
+        indices[c] = vertexCount++;
+        break;
+      }
+      if (positionBits[3 * v] === x && positionBits[3 * v + 1] === y && positionBits[3 * v + 2] === z) {
+        indices[c] = v;
+        break;
+      }
+      slot = (slot + 1) & mask;
+    }
+  }
+  return { positions: positions.slice(0, 3 * vertexCount), indices };
+}
+
+function hashBits(x: number, y: number, z: number): number {
+  let h = Math.imul(x, 0x9e3779b1) ^ Math.imul(y, 0x85ebca77) ^ Math.imul(z, 0xc2b2ae3d);
+  h ^= h >>> 15;
+  h = Math.imul(h, 0x2c1b3c6d);
+  return h ^ (h >>> 12);
+}

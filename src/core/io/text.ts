@@ -1,0 +1,364 @@
+/**
+ * One tokenizer for every text format (PLY ascii, OFF, OBJ, ascii STL), working on the file's
+ * bytes: no decoding of the whole file, no splitting into lines or strings.
+ *
+ * Text mesh files are lines of tokens separated by spaces or tabs (any byte up to the space
+ * character counts as one, so a stray carriage return or NUL does no harm). The scanner keeps a
+ * cursor (`pos`), the current line number and where that line starts, so every error can say
+ * "line 12, column 5". Numbers are read straight from the digits: the mantissa is gathered as an
+ * integer and scaled by one exact power of ten, which rounds correctly when the mantissa is below
+ * 2^53 (every 15-digit number, most 16-digit ones) and the exponent at most 22 either way — the
+ * usual case, "0.123456" or "-1.5e-3". Anything else falls back to the engine's own parser on that
+ * one token, so every value is read exactly.
+ *
+ * Formats differ only in what counts as a comment: OFF and OBJ skip from `#` to the end of the
+ * line, PLY has no comments in its data.
+ *
+ * @example
+ *   const scanner = new TextScanner(bytes, 'off', { hashComments: true });
+ *   scanner.skipBlankLines();
+ *   const x = scanner.number();
+ */
+import { ParseError } from '../errors.js';
+
+const LF = 10;
+const SPACE = 32;
+const HASH = 35;
+const PLUS = 43;
+const MINUS = 45;
+const DOT = 46;
+const SLASH = 47;
+const ZERO = 48;
+const NINE = 57;
+const UPPER_E = 69;
+const LOWER_E = 101;
+
+/** Largest integer below which every integer is an exact double (2^53). */
+const EXACT_INTEGER_LIMIT = 9007199254740992;
+/** Powers of ten that are exact doubles; scaling by one of them rounds correctly. */
+const EXACT_POWERS_OF_TEN = Array.from({ length: 23 }, (_, k) => 10 ** k);
+
+export interface ScannerOptions {
+  /** `#` starts a comment that runs to the end of the line (OFF, OBJ). */
+  hashComments?: boolean;
+  /** Where to start reading (default 0). */
+  start?: number;
+  /** The number of the line that `start` is on (default 1). */
+  line?: number;
+  /** Receives the text of each `#` comment passed over. */
+  comments?: string[];
+}
+
+/** Comments kept per file; a file with a comment on every line would otherwise keep millions. */
+const MAX_COMMENTS = 1000;
+
+export class TextScanner {
+  readonly bytes: Uint8Array;
+  readonly format: string;
+  /** Byte offset of the cursor. */
+  pos: number;
+  /** 1-based number of the line the cursor is on. */
+  line: number;
+  /** Set by `number()`: true when the number had neither a decimal point nor an exponent. */
+  integral = false;
+  /** Comments passed over beyond the `MAX_COMMENTS` kept. */
+  droppedComments = 0;
+  private lineStart: number;
+  private readonly hashComments: boolean;
+  private readonly comments: string[] | null;
+
+  constructor(bytes: Uint8Array, format: string, options: ScannerOptions = {}) {
+    this.bytes = bytes;
+    this.format = format;
+    this.hashComments = options.hashComments ?? false;
+    this.comments = options.comments ?? null;
+    this.pos = options.start ?? 0;
+    this.line = options.line ?? 1;
+    this.lineStart = this.pos;
+  }
+
+  /** Skips spaces, tabs, carriage returns and (when enabled) a `#` comment; stops at a line feed. */
+  skipSpaces(): void {
+    const bytes = this.bytes;
+    const end = bytes.length;
+    let i = this.pos;
+    while (i < end) {
+      const c = bytes[i];
+      if (c === LF) break;
+      if (c <= SPACE) i++;
+      else if (c === HASH && this.hashComments) {
+        const start = i + 1;
+        while (i < end && bytes[i] !== LF) i++;
+        this.keepComment(start, i);
+      } else break;
+    }
+    this.pos = i;
+  }
+
+  /** True when only spaces or a comment remain on this line (or the file has ended). */
+  atLineEnd(): boolean {
+    this.skipSpaces();
+    return this.pos >= this.bytes.length || this.bytes[this.pos] === LF;
+  }
+
+  /** Moves past the end of this line, whatever is left on it. */
+  nextLine(): void {
+    const bytes = this.bytes;
+    let i = this.pos;
+    while (i < bytes.length && bytes[i] !== LF) i++;
+    if (i < bytes.length) this.newLineAt(i);
+    else this.pos = i;
+  }
+
+  /** Moves to the next token, across blank and comment-only lines; false at the end of the file. */
+  skipBlankLines(): boolean {
+    for (;;) {
+      this.skipSpaces();
+      if (this.pos >= this.bytes.length) return false;
+      if (this.bytes[this.pos] !== LF) return true;
+      this.newLineAt(this.pos);
+    }
+  }
+
+  /**
+   * Ends a line of data: only spaces or a comment may remain on it.
+   * @throws ParseError naming `what` when more values follow.
+   */
+  endLine(what: string): void {
+    if (!this.atLineEnd()) this.fail(`${what}, then found '${this.token()}'`);
+    if (this.pos < this.bytes.length) this.newLineAt(this.pos);
+  }
+
+  /** The next token as a string (empty at the end of a line), without moving past it. */
+  token(at = this.pos): string {
+    return excerpt(this.bytes, at, tokenEnd(this.bytes, at));
+  }
+
+  /** Reads the next token as a word (a keyword, a name). Empty at the end of a line. */
+  word(): string {
+    this.skipSpaces();
+    const start = this.pos;
+    this.pos = tokenEnd(this.bytes, start);
+    return decodeText(this.bytes, start, this.pos);
+  }
+
+  /** The rest of this line as text, trimmed, without moving to the next line. */
+  restOfLine(): string {
+    const bytes = this.bytes;
+    const start = this.pos;
+    let end = start;
+    while (end < bytes.length && bytes[end] !== LF) end++;
+    this.pos = end;
+    return trimmedText(bytes, start, end);
+  }
+
+  /**
+   * Reads a decimal number ("12", "-0.5", "1.5e-3", ".5"). Sets `integral`.
+   * @throws ParseError when the next token is not a finite number.
+   */
+  number(): number {
+    this.skipSpaces();
+    const bytes = this.bytes;
+    const start = this.pos;
+    let i = start;
+    let c = bytes[i];
+    const negative = c === MINUS;
+    if (negative || c === PLUS) c = bytes[++i];
+    let mantissa = 0;
+    let digits = 0;
+    let exponent = 0;
+    while (c >= ZERO && c <= NINE) {
+      mantissa = mantissa * 10 + (c - ZERO);
+      digits++;
+      c = bytes[++i];
+    }
+    let integral = true;
+    if (c === DOT) {
+      integral = false;
+      c = bytes[++i];
+      while (c >= ZERO && c <= NINE) {
+        mantissa = mantissa * 10 + (c - ZERO);
+        digits++;
+        exponent--;
+        c = bytes[++i];
+      }
+    }
+    if (digits === 0) this.notANumber(start);
+    if (c === LOWER_E || c === UPPER_E) {
+      integral = false;
+      c = bytes[++i];
+      const negativeExponent = c === MINUS;
+      if (negativeExponent || c === PLUS) c = bytes[++i];
+      if (!(c >= ZERO && c <= NINE)) this.notANumber(start);
+      let written = 0;
+      while (c >= ZERO && c <= NINE) {
+        if (written < 100000) written = written * 10 + (c - ZERO);
+        c = bytes[++i];
+      }
+      exponent += negativeExponent ? -written : written;
+    }
+    if (!this.isDelimiter(c)) this.notANumber(start);
+    this.pos = i;
+    this.integral = integral;
+    let value: number;
+    if (mantissa < EXACT_INTEGER_LIMIT && exponent >= -22 && exponent <= 22) {
+      value = exponent < 0 ? mantissa / EXACT_POWERS_OF_TEN[-exponent] : mantissa * EXACT_POWERS_OF_TEN[exponent];
+      if (negative) value = -value;
+    } else {
+      // many digits or a large exponent: let the engine round this one token
+      value = Number(decodeText(bytes, start, i));
+      if (!Number.isFinite(value)) this.fail(`the number '${this.token(start)}' is too large`, start);
+    }
+    return value;
+  }
+
+  /**
+   * Reads a whole number ("12", "-3"). With `slashEnds`, a `/` also ends it (OBJ's "7/2/5").
+   * @throws ParseError when the next token is not a whole number.
+   */
+  integer(slashEnds = false): number {
+    this.skipSpaces();
+    const bytes = this.bytes;
+    const start = this.pos;
+    let i = start;
+    let c = bytes[i];
+    const negative = c === MINUS;
+    if (negative || c === PLUS) c = bytes[++i];
+    let value = 0;
+    const digitsStart = i;
+    while (c >= ZERO && c <= NINE) {
+      value = value * 10 + (c - ZERO);
+      c = bytes[++i];
+    }
+    if (i === digitsStart || !(this.isDelimiter(c) || (slashEnds && c === SLASH))) {
+      const token = this.token(start);
+      this.fail(`expected a whole number, found ${token ? `'${token}'` : 'the end of the line'}`, start);
+    }
+    this.pos = i;
+    return negative ? -value : value;
+  }
+
+  /** Where the cursor is, as a line and column (1-based). */
+  location(at = this.pos): { line: number; column: number } {
+    return { line: this.line, column: at - this.lineStart + 1 };
+  }
+
+  /** @throws ParseError at `at` (default: the cursor) on the current line. */
+  fail(reason: string, at = this.pos): never {
+    throw new ParseError(this.format, this.location(at), reason);
+  }
+
+  private keepComment(start: number, end: number): void {
+    if (this.comments === null) return;
+    if (this.comments.length === MAX_COMMENTS) {
+      this.droppedComments++;
+      return;
+    }
+    this.comments.push(trimmedText(this.bytes, start, end));
+  }
+
+  private notANumber(start: number): never {
+    const token = this.token(start);
+    if (!token) {
+      this.fail(`expected a number, found the end of the ${start >= this.bytes.length ? 'file' : 'line'}`, start);
+    }
+    const special = /^[+-]?(nan|inf)/i.test(token) ? ' (NaN and infinity are not allowed)' : '';
+    this.fail(`expected a number, found '${token}'${special}`, start);
+  }
+
+  private isDelimiter(c: number | undefined): boolean {
+    return c === undefined || c <= SPACE || (c === HASH && this.hashComments);
+  }
+
+  private newLineAt(lineFeed: number): void {
+    this.pos = lineFeed + 1;
+    this.line++;
+    this.lineStart = this.pos;
+  }
+}
+
+function tokenEnd(bytes: Uint8Array, start: number): number {
+  let end = start;
+  while (end < bytes.length && bytes[end] > SPACE) end++;
+  return end;
+}
+
+function trimmedText(bytes: Uint8Array, start: number, end: number): string {
+  while (start < end && bytes[start] <= SPACE) start++;
+  while (end > start && bytes[end - 1] <= SPACE) end--;
+  return decodeText(bytes, start, end);
+}
+
+/** A token quoted in an error message: at most 24 characters, control bytes made visible. */
+function excerpt(bytes: Uint8Array, start: number, end: number): string {
+  const text = decodeText(bytes, start, Math.min(end, start + 24));
+  const hex = (ch: string) => `\\x${ch.charCodeAt(0).toString(16).padStart(2, '0')}`;
+  const visible = text.replace(/[\u0000-\u001f\u007f]/g, hex);
+  return end - start > 24 ? `${visible}…` : visible;
+}
+
+/**
+ * Decodes UTF-8 bytes (ASCII being the common case) into a string; a malformed sequence becomes
+ * U+FFFD. Used for names, comments and error excerpts, never for the bulk of the data.
+ */
+export function decodeText(bytes: Uint8Array, start = 0, end = bytes.length): string {
+  end = Math.min(end, bytes.length);
+  let text = '';
+  let i = start;
+  while (i < end) {
+    const c = bytes[i];
+    if (c < 0x80) {
+      text += String.fromCharCode(c);
+      i++;
+      continue;
+    }
+    const length = c >= 0xf0 ? 4 : c >= 0xe0 ? 3 : c >= 0xc0 ? 2 : 0;
+    let code = length === 4 ? c & 0x07 : length === 3 ? c & 0x0f : c & 0x1f;
+    let ok = length > 0 && i + length <= end;
+    for (let k = 1; ok && k < length; k++) {
+      const next = bytes[i + k];
+      ok = (next & 0xc0) === 0x80;
+      code = (code << 6) | (next & 0x3f);
+    }
+    if (ok && code <= 0x10ffff) {
+      text += String.fromCodePoint(code);
+      i += length;
+    } else {
+      text += '\ufffd';
+      i++;
+    }
+  }
+  return text;
+}
+
+/** Encodes a string as UTF-8 bytes (the writers' counterpart of `decodeText`). */
+export function encodeText(text: string): Uint8Array {
+  const bytes = new Uint8Array(text.length * 3);
+  let n = 0;
+  for (let i = 0; i < text.length; i++) {
+    let code = text.charCodeAt(i);
+    if (code < 0x80) {
+      bytes[n++] = code;
+      continue;
+    }
+    if (code >= 0xd800 && code < 0xdc00 && i + 1 < text.length) {
+      const low = text.charCodeAt(i + 1);
+      if (low >= 0xdc00 && low < 0xe000) {
+        code = 0x10000 + ((code - 0xd800) << 10) + (low - 0xdc00);
+        i++;
+      }
+    }
+    if (code < 0x800) {
+      bytes[n++] = 0xc0 | (code >> 6);
+    } else if (code < 0x10000) {
+      bytes[n++] = 0xe0 | (code >> 12);
+      bytes[n++] = 0x80 | ((code >> 6) & 0x3f);
+    } else {
+      bytes[n++] = 0xf0 | (code >> 18);
+      bytes[n++] = 0x80 | ((code >> 12) & 0x3f);
+      bytes[n++] = 0x80 | ((code >> 6) & 0x3f);
+    }
+    bytes[n++] = 0x80 | (code & 0x3f);
+  }
+  return bytes.slice(0, n);
+}

@@ -1,0 +1,201 @@
+import { describe, expect, it } from 'vitest';
+import { attribute, faceLists, parseError, read } from './helpers.js';
+
+const quadAndTriangle = [
+  [0, 1, 2, 3],
+  [0, 3, 4],
+];
+const fivePoints = '0 0 0\n1 0 0\n1 1 0\n0 1 0\n-1 0.5 0\n';
+
+describe('OFF variants', () => {
+  it('reads plain OFF, faces of any degree kept as polygons', () => {
+    const file = read(`OFF\n5 2 0\n${fivePoints}4 0 1 2 3\n3 0 3 4\n`);
+    expect(file.format).toBe('off');
+    expect(file.counts).toEqual({ vertices: 5, faces: 2 });
+    expect(faceLists(file.soup)).toEqual(quadAndTriangle);
+    expect(Array.from(file.soup.positions.subarray(12))).toEqual([-1, 0.5, 0]);
+  });
+
+  it('reads counts on the keyword line, glued to the keyword, and without the edge count', () => {
+    for (const head of ['OFF 5 2 0\n', 'OFF5 2 0\n', 'OFF\n5 2\n']) {
+      expect(faceLists(read(`${head}${fivePoints}4 0 1 2 3\n3 0 3 4\n`).soup)).toEqual(quadAndTriangle);
+    }
+  });
+
+  it('skips # comments anywhere: before the keyword, between keyword and counts, after values, and blank lines', () => {
+    const source =
+      '# made by hand\n\nOFF # keyword\n# counts next\n\n5 2 7 # edges ignored\n' +
+      '0 0 0 # 0\n1 0 0\n\n1 1 0\t# two\n0 1 0\n-1 0.5 0\n# faces\n4 0 1 2 3 # quad\n3 0 3 4\n';
+    const file = read(source);
+    expect(faceLists(file.soup)).toEqual(quadAndTriangle);
+    expect(file.comments).toEqual(['made by hand', 'keyword', 'counts next', 'edges ignored', '0', 'two', 'faces', 'quad']);
+  });
+
+  it('reads COFF vertex colours, as uint8 when written as integers and float32 otherwise', () => {
+    const ints = read('COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 128\n3 0 1 2\n');
+    const intColor = attribute(ints.soup.vertexAttributes, 'color');
+    expect([intColor.itemSize, intColor.data.constructor, Array.from(intColor.data)]).toEqual([
+      4,
+      Uint8Array,
+      [255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 128],
+    ]);
+    const floats = read('COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0 1.0 0\n0 1 0 0 0 0.5\n3 0 1 2\n');
+    const floatColor = attribute(floats.soup.vertexAttributes, 'color');
+    expect([floatColor.itemSize, floatColor.data.constructor, Array.from(floatColor.data)]).toEqual([
+      3,
+      Float32Array,
+      [1, 0, 0, 0, 1, 0, 0, 0, 0.5],
+    ]);
+  });
+
+  it('reads NOFF normals, STOFF texture coordinates and all of STCNOFF in Geomview order', () => {
+    const noff = read('NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 -1\n3 0 1 2\n');
+    expect(Array.from(attribute(noff.soup.vertexAttributes, 'normal').data)).toEqual([0, 0, 1, 0, 0, 1, 0, 0, -1]);
+    const vertices = '0 0 0  0 0 1  1 0 0 1  0.5 1\n1 0 0  0 0 1  0 1 0 1  0 0\n0 1 0  0 0 1  0 0 1 1  1 0\n';
+    const all = read(`STCNOFF\n3 1 0\n${vertices}3 0 1 2\n`);
+    const names = all.soup.vertexAttributes!.map((a) => a.name);
+    expect(names).toEqual(['normal', 'color', 'texcoord']);
+    expect(Array.from(attribute(all.soup.vertexAttributes, 'texcoord').data)).toEqual([0.5, 1, 0, 0, 1, 0]);
+    expect(Array.from(attribute(all.soup.vertexAttributes, 'color').data)).toEqual([1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1]);
+  });
+
+  it('reads 4OFF homogeneous coordinates and nOFF with 2 or 3 dimensions', () => {
+    const four = read('4OFF\n3 1 0\n0 0 0 1\n2 0 0 2\n0 4 0 4\n3 0 1 2\n');
+    expect(Array.from(four.soup.positions)).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    const flat = read('nOFF\n2\n3 1 0\n0 0\n1 0\n0 1\n3 0 1 2\n');
+    expect(Array.from(flat.soup.positions)).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    const three = read('nOFF 3\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n');
+    expect(three.counts).toEqual({ vertices: 3, faces: 1 });
+  });
+
+  it('refuses vertices that cannot be 3D: 4 or more dimensions, or a point at infinity', () => {
+    expect(parseError(() => read('nOFF\n4\n1 0 0\n0 0 0 0\n')).message).toBe(
+      'off: line 1, column 1: nOFF vertices have 4 coordinates: only meshes in 3D (or 2D) can be read',
+    );
+    expect(parseError(() => read('4OFF\n2 0 0\n0 0 0 1\n1 1 1 0\n')).message).toBe(
+      'off: line 4, column 8: vertex 1 has w = 0: a point at infinity has no place in a mesh',
+    );
+  });
+
+  it('keeps face colours after the indices: RGB, RGBA, integers or reals; colour-map indices are noted', () => {
+    const rgb = read(`OFF\n5 2 0\n${fivePoints}4 0 1 2 3 1.0 0.5 0.0\n3 0 3 4 0 0 1.0\n`);
+    const color = attribute(rgb.soup.faceAttributes, 'color');
+    expect([color.itemSize, color.data.constructor, Array.from(color.data)]).toEqual([3, Float32Array, [1, 0.5, 0, 0, 0, 1]]);
+    const rgba = read(`OFF\n5 2 0\n${fivePoints}4 0 1 2 3 255 128 0 255\n3 0 3 4\n`);
+    const intColor = attribute(rgba.soup.faceAttributes, 'color');
+    expect([intColor.itemSize, intColor.data.constructor]).toEqual([4, Uint8Array]);
+    expect(Array.from(intColor.data)).toEqual([255, 128, 0, 255, 0, 0, 0, 255]);
+    expect(rgba.notes).toContain('1 face has no colour (left black)');
+    const indexed = read(`OFF\n5 2 0\n${fivePoints}4 0 1 2 3 7\n3 0 3 4 2\n`);
+    expect(indexed.soup.faceAttributes).toEqual([]);
+    expect(indexed.notes).toContain('ignored the colour-map indices of 2 faces (no colour map is loaded)');
+  });
+
+  it("skips a Geomview 'appearance { … }' block before the keyword", () => {
+    const file = read('appearance {\n  +texturing\n  texture { file grid.pgm }\n}\nOFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n');
+    expect(file.counts).toEqual({ vertices: 3, faces: 1 });
+    expect(file.notes[0]).toMatch(/skipped a Geomview 'appearance/);
+  });
+
+  it('reads CRLF line endings and files without the keyword (by the .off name)', () => {
+    expect(faceLists(read('OFF\r\n3 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n').soup)).toEqual([[0, 1, 2]]);
+    const bare = read('3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n', 'triangle.off');
+    expect(bare.notes).toContain('no OFF keyword: read as plain OFF');
+  });
+});
+
+describe('OFF BINARY', () => {
+  /** A binary OFF of a quad and a triangle over five points. */
+  function binaryOff(littleEndian: boolean, faceColorCount: boolean, colors: number[][] = [[], []]): Uint8Array {
+    const words: Array<['i' | 'f', number]> = [
+      ['i', 5],
+      ['i', 2],
+      ['i', 0],
+    ];
+    for (const x of [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 0.5, 0]) words.push(['f', x]);
+    quadAndTriangle.forEach((face, f) => {
+      words.push(['i', face.length], ...face.map((v): ['i', number] => ['i', v]));
+      if (faceColorCount) words.push(['i', colors[f].length], ...colors[f].map((c): ['f', number] => ['f', c]));
+    });
+    const head = new TextEncoder().encode('OFF BINARY\n');
+    const bytes = new Uint8Array(head.length + 4 * words.length);
+    bytes.set(head);
+    const view = new DataView(bytes.buffer);
+    words.forEach(([kind, x], i) => {
+      if (kind === 'i') view.setInt32(head.length + 4 * i, x, littleEndian);
+      else view.setFloat32(head.length + 4 * i, x, littleEndian);
+    });
+    return bytes;
+  }
+
+  it('reads the big-endian layout of the Geomview spec, with face colour counts', () => {
+    const file = read(binaryOff(false, true, [[1, 0, 0], []]));
+    expect(file.encoding).toBe('binary_big_endian');
+    expect(faceLists(file.soup)).toEqual(quadAndTriangle);
+    expect(Array.from(file.soup.positions.subarray(12))).toEqual([-1, 0.5, 0]);
+    expect(Array.from(attribute(file.soup.faceAttributes, 'color').data)).toEqual([1, 0, 0, 0, 0, 0]);
+  });
+
+  it("reads pmp-library's little-endian layout without colour counts, and says so", () => {
+    const file = read(binaryOff(true, false));
+    expect(file.encoding).toBe('binary_little_endian');
+    expect(faceLists(file.soup)).toEqual(quadAndTriangle);
+    expect(file.notes[0]).toMatch(/read as little-endian without face colour counts/);
+  });
+
+  it('reports where a cut-off binary file ends', () => {
+    const bytes = binaryOff(false, true);
+    const error = parseError(() => read(bytes.subarray(0, bytes.length - 6)));
+    expect(error.location.byteOffset).toBeGreaterThan(11);
+    expect(error.format).toBe('off');
+  });
+});
+
+describe('malformed OFF', () => {
+  it('says when a face lists fewer indices than it announces', () => {
+    const error = parseError(() => read(`OFF\n5 2 0\n${fivePoints}5 0 1 2 3\n3 0 3 4\n`));
+    expect(error.message).toBe('off: line 8, column 10: face 0 announces 5 corners but lists 4 vertex ids');
+  });
+
+  it('names an out-of-range vertex index with its line, column and face', () => {
+    const error = parseError(() => read(`OFF\n5 2 0\n${fivePoints}4 0 1 2 3\n3 0 3 17\n`));
+    expect(error.message).toBe('off: line 9, column 7: face 1: vertex index 17 is out of range 0..4');
+  });
+
+  it('says how many vertices and faces came before the file ended', () => {
+    expect(parseError(() => read(`OFF\n6 0 0\n${fivePoints}          \n`)).message).toBe(
+      'off: line 9, column 1: the file ends after 5 of 6 vertices',
+    );
+    const twoFaces = `OFF\n5 3 0\n${fivePoints}4 0 1 2 3\n3 0 3 4\n      `;
+    expect(parseError(() => read(twoFaces)).message).toMatch(/the file ends after 2 of 3 faces/);
+  });
+
+  it('refuses counts the file cannot hold before allocating, and negative counts', () => {
+    const start = performance.now();
+    expect(parseError(() => read('OFF\n2147483647 2147483647 0\n0 0 0\n')).message).toMatch(
+      /line 2, column 1: the counts announce 2147483647 vertices and 2147483647 faces, but only 6 bytes follow/,
+    );
+    expect(performance.now() - start).toBeLessThan(50);
+    expect(parseError(() => read('OFF\n-3 1 0\n')).message).toMatch(/negative counts/);
+  });
+
+  it('refuses a vertex with too few coordinates, and junk where a number belongs', () => {
+    expect(parseError(() => read('OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n')).message).toBe(
+      'off: line 4, column 4: vertex 1 has 2 numbers, but OFF needs 3 coordinates',
+    );
+    expect(parseError(() => read('OFF\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n')).message).toBe(
+      "off: line 4, column 5: expected a number, found 'zero'",
+    );
+  });
+
+  it('refuses two numbers after a face: no colour has two components', () => {
+    const error = parseError(() => read(`OFF\n5 1 0\n${fivePoints}3 0 1 2 3 4\n`));
+    expect(error.message).toMatch(/face 0 has 2 numbers after its vertex ids/);
+  });
+
+  it('refuses an unknown keyword and an empty file', () => {
+    expect(parseError(() => read('OFFX\n3 1 0\n', 'x.off')).message).toMatch(/unknown keyword 'OFFX'/);
+    expect(parseError(() => read('', 'empty.off')).message).toBe('off: byte 0: the file is empty (0 bytes)');
+    expect(parseError(() => read('# nothing but a comment\n', 'x.off')).message).toMatch(/holds no OFF data/);
+  });
+});
