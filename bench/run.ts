@@ -6,9 +6,10 @@
  */
 import { type BenchCase, runCase } from './harness.js';
 import { buildCases } from './cases/build.js';
+import { cutCases } from './cases/cut.js';
 import { parseCases } from './cases/parse.js';
 
-const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases];
+const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases, cutCases];
 
 const args = process.argv.slice(2);
 const json = args.includes('--json');

@@ -1,5 +1,6 @@
 /** The CLI's commands, by name. Each lives in its own file. */
 import { convert } from './convert.js';
+import { cutCommand } from './cut.js';
 import { stats } from './stats.js';
 import { validateCommand } from './validate.js';
 
@@ -14,4 +15,5 @@ export const commands: Record<string, Command> = {
   stats,
   validate: validateCommand,
   convert,
+  cut: cutCommand,
 };
