@@ -4,8 +4,7 @@
  * fans; non-convex ones are ear-clipped in their own plane, so an L-shaped face draws as an L.
  * The mesh itself is not changed.
  */
-import earcut from 'earcut';
-import { faceVectorArea, type HalfedgeMesh } from '../core/index.js';
+import { faceVectorArea, type HalfedgeMesh, planeBasis, triangulatePolygon } from '../core/index.js';
 import type { RenderBuffers } from './protocol.js';
 
 export function triangulateFaces(mesh: HalfedgeMesh): RenderBuffers {
@@ -62,24 +61,17 @@ function isConvex(p: Float64Array, loop: number[], normal: number[]): boolean {
   return true;
 }
 
-/**
- * Ear clipping in the plane the face mostly lies in: drop the coordinate along which the normal is
- * largest (swapping the other two when that axis points backwards, to keep the loop's turning).
- */
+/** Ear clipping in the face's best-fit plane (a face whose outline crosses itself gets a fan). */
 function earClip(p: Float64Array, loop: number[], normal: number[]): number[] {
-  const ax = Math.abs(normal[0]);
-  const ay = Math.abs(normal[1]);
-  const az = Math.abs(normal[2]);
-  const drop = az >= ax && az >= ay ? 2 : ay >= ax ? 1 : 0;
-  let [u, v] = [(drop + 1) % 3, (drop + 2) % 3];
-  if (normal[drop] < 0) [u, v] = [v, u];
+  const [u, w] = planeBasis(normal[0], normal[1], normal[2]);
   const flat = new Float64Array(2 * loop.length);
   loop.forEach((vertex, i) => {
-    flat[2 * i] = p[3 * vertex + u];
-    flat[2 * i + 1] = p[3 * vertex + v];
+    const x = p[3 * vertex];
+    const y = p[3 * vertex + 1];
+    const z = p[3 * vertex + 2];
+    flat[2 * i] = x * u[0] + y * u[1] + z * u[2];
+    flat[2 * i + 1] = x * w[0] + y * w[1] + z * w[2];
   });
-  const ears = earcut(flat);
-  // earcut gives up on self-intersecting outlines; a fan still covers the face
-  if (ears.length !== 3 * (loop.length - 2)) return fan(loop);
-  return ears.map((i) => loop[i]);
+  const corners = triangulatePolygon(flat, []);
+  return corners ? Array.from(corners, (i) => loop[i]) : fan(loop);
 }

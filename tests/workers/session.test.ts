@@ -6,6 +6,7 @@ import {
   diffPointers,
   ParseError,
   serializeMesh,
+  soupFromArrays,
   subdivide,
   tetrahedron,
   TopologyError,
@@ -161,5 +162,24 @@ describe('snapshots cross the worker boundary by transfer', () => {
     // and the session still has its mesh
     expect(validate(buildMesh(cube()).mesh)).toEqual([]);
     expect(session.snapshot().mesh.heNext.length).toBe(24);
+  });
+});
+
+describe('triangles for drawing', () => {
+  it('splits a non-convex face into triangles that stay inside it', async () => {
+    const { triangulateFaces } = await import('../../src/workers/triangulate.js');
+    // an L-shaped hexagon listed from (2, 1): a fan from there would cover the notch
+    const { mesh } = buildMesh(soupFromArrays([0, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 1, 2, 0, 0, 2, 0], [[2, 3, 4, 5, 0, 1]]));
+    const { triangles, triangleFace } = triangulateFaces(mesh);
+    expect(triangles.length).toBe(3 * 4);
+    expect(Array.from(triangleFace)).toEqual([0, 0, 0, 0]);
+    let area = 0;
+    for (let t = 0; t < triangles.length; t += 3) {
+      const [a, b, c] = [triangles[t], triangles[t + 1], triangles[t + 2]].map((v) => mesh.position(v));
+      const triangle = ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])) / 2;
+      expect(triangle).toBeGreaterThan(0); // counter-clockwise: none folds over the notch
+      area += triangle;
+    }
+    expect(area).toBeCloseTo(3, 12);
   });
 });
