@@ -48,6 +48,8 @@ export interface BuildResult {
 export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildResult {
   checkSoupShape(soup);
   const progress = options.onProgress ?? (() => {});
+  /** Progress from `from` to `to` as a long loop goes: `tick(i, n)` every `TICK + 1` items. */
+  const span = (from: number, to: number) => (i: number, n: number) => progress(from + ((to - from) * i) / n);
   const nInputVertices = soup.positions.length / 3;
   const nInputFaces = soup.faceStarts.length - 1;
   const report = new ReportBuilder();
@@ -57,7 +59,7 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   progress(0.2);
 
   // 2. pair the corners that share an edge
-  let pairing = pairCorners(kept.corners, kept.starts, nInputVertices);
+  let pairing = pairCorners(kept.corners, kept.starts, nInputVertices, span(0.2, 0.4));
   progress(0.4);
 
   // 3. orient: flip faces until every pair runs opposite ways, or cut where it cannot
@@ -72,12 +74,12 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   progress(0.5);
 
   // 5. number the halfedges and link each face loop (twin becomes each corner's halfedge)
-  const mesh = linkFaces(kept, pairing.twin, nInputVertices);
+  const mesh = linkFaces(kept, pairing.twin, nInputVertices, span(0.5, 0.7));
   copyAttributes(soup, kept, mesh, pairing.twin);
   progress(0.7);
 
   // 6. one fan per vertex
-  splitFans(mesh, report);
+  splitFans(mesh, report, span(0.7, 0.9));
   progress(0.9);
 
   // 7. link the boundary loops
@@ -93,6 +95,11 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
 }
 
 type IndexArray = Int32Array | Uint32Array;
+
+/** Reports progress through a loop of `n` items at item `i`. */
+type Tick = (i: number, n: number) => void;
+/** Long loops tick every `TICK + 1` items (a mask: a power of two minus one). */
+const TICK = 0x3fff;
 
 /**
  * The faces that survive phase 1, as corner lists (CSR like the soup). When every face survives
@@ -275,12 +282,13 @@ interface Pairing {
   crowded: number[][];
 }
 
-function pairCorners(corners: IndexArray, starts: IndexArray, nV: number): Pairing {
+function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: Tick = () => {}): Pairing {
   const nF = starts.length - 1;
   const nC = starts[nF];
   // bucket the corners by the lower vertex of their edge (counting sort)
   const bucketStart = new Int32Array(nV + 1);
   for (let f = 0; f < nF; f++) {
+    if ((f & TICK) === 0) tick(f, 3 * nF);
     const s = starts[f];
     const e = starts[f + 1];
     for (let c = s; c < e; c++) {
@@ -294,6 +302,7 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number): Pairi
   const fill = bucketStart.slice(0, nV);
   const entries = new Int32Array(2 * nC);
   for (let f = 0; f < nF; f++) {
+    if ((f & TICK) === 0) tick(nF + f, 3 * nF);
     const s = starts[f];
     const e = starts[f + 1];
     for (let c = s; c < e; c++) {
@@ -313,6 +322,7 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number): Pairi
   const crowdedByFirst = new Map<number, number[]>();
   let sameDirectionPairs = 0;
   for (let lo = 0; lo < nV; lo++) {
+    if ((lo & TICK) === 0) tick(2 * nV + lo, 3 * nV);
     const end = 2 * bucketStart[lo + 1];
     for (let slot = 2 * bucketStart[lo]; slot < end; slot += 2) {
       const c = entries[slot];
@@ -479,7 +489,7 @@ function cornerEdge(kept: KeptFaces, c: number): [number, number] {
  * 0's halfedges are h0, h2, h4, … To spare a second array of corner size, `twin` is overwritten
  * as the pass goes: afterwards `twin[c]` is the halfedge of corner c.
  */
-function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number): HalfedgeMesh {
+function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number, tick: Tick = () => {}): HalfedgeMesh {
   const { corners, starts, faceCount: nF } = kept;
   const nC = starts[nF];
   let unpaired = 0;
@@ -495,6 +505,7 @@ function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number): HalfedgeMesh 
   if (unpaired > 0) heFace.fill(-1);
   let edges = 0;
   for (let f = 0; f < nF; f++) {
+    if ((f & TICK) === 0) tick(f, nF);
     const s = starts[f];
     const e = starts[f + 1];
     let first = -1;
@@ -549,13 +560,14 @@ function copyAttributes(soup: PolygonSoup, kept: KeptFaces, mesh: HalfedgeMesh, 
  * exactly one fan. Sets each vertex's halfedge (its outgoing boundary halfedge on an open fan) and
  * the origin of each boundary halfedge.
  */
-function splitFans(mesh: HalfedgeMesh, report: ReportBuilder): void {
+function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, tick: Tick = () => {}): void {
   const { heNext, hePrev, heVertex, heFace } = mesh;
   const nH = mesh.halfedgeSlots;
   mesh.vHalfedge.fill(-1);
   const visited = new Uint8Array(nH);
   const copies = new Map<number, number[]>();
   for (let h = 0; h < nH; h++) {
+    if ((h & TICK) === 0) tick(h, nH);
     if (heFace[h] === -1 || visited[h]) continue;
     const v = heVertex[h];
     // rotate counter-clockwise (twin of prev) to the first halfedge of an open fan, or all the way round

@@ -32,6 +32,12 @@ export interface MeshFile {
 
 export type Progress = (fraction: number) => void;
 
+/**
+ * Readers report progress every `PROGRESS_ROWS + 1` rows (a power of two, tested with a mask):
+ * often enough for ten updates a second on the largest files, rarely enough to cost nothing.
+ */
+export const PROGRESS_ROWS = 0x3fff;
+
 /** Binary data can hold NaN or infinity (text readers refuse them): note which vertex first has one. */
 export function noteNonFinitePositions(positions: ArrayLike<number>, notes: string[]): void {
   let count = 0;

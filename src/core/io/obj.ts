@@ -19,7 +19,7 @@ import { ParseError } from '../errors.js';
 import { plural } from '../report.js';
 import type { SoupAttribute } from '../soup.js';
 import { GrowableArray } from './growable.js';
-import type { MeshFile, Progress } from './mesh-file.js';
+import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { TextScanner } from './text.js';
 
 const SLASH = 47;
@@ -118,7 +118,7 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
   };
 
   while (scanner.skipBlankLines()) {
-    if ((++statements & 0xffff) === 0) progress(scanner.pos / bytes.length);
+    if ((++statements & PROGRESS_ROWS) === 0) progress(scanner.pos / bytes.length);
     const keywordAt = scanner.pos;
     const keyword = scanner.word();
     switch (keyword) {

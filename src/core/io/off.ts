@@ -23,7 +23,7 @@ import { plural } from '../report.js';
 import type { PolygonSoup, SoupAttribute } from '../soup.js';
 import { BinaryReader } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type MeshFile, noteNonFinitePositions, type Progress } from './mesh-file.js';
+import { type MeshFile, noteNonFinitePositions, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { TextScanner } from './text.js';
 
 /** `[ST][C][N][4][n]OFF`, possibly with the counts glued on (`OFF8 6 0`). */
@@ -344,6 +344,7 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
     if (!scanner.skipBlankLines()) {
       scanner.fail(`the file ends after ${v} of ${plural(vertexCount, 'vertex', 'vertices')}`);
     }
+    if ((v & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
     mesh.setVertex(v, values, integral, readLine(`vertex ${v}`), fail);
     scanner.endLine(`vertex ${v} should end here`);
   }
@@ -352,7 +353,7 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
   const { faceStarts, faceIndices } = mesh;
   for (let f = 0; f < faceCount; f++) {
     if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${f} of ${plural(faceCount, 'face')}`);
-    if ((f & 0xffff) === 0xffff) progress(scanner.pos / bytes.length);
+    if ((f & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
     const at = scanner.pos;
     const degree = scanner.integer();
     if (degree < 1) scanner.fail(`face ${f} has ${degree} corners; a face needs at least one`, at);

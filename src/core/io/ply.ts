@@ -39,7 +39,7 @@ import { plural } from '../report.js';
 import type { SoupAttribute } from '../soup.js';
 import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type Encoding, type MeshFile, noteNonFinitePositions, type Progress } from './mesh-file.js';
+import { type Encoding, type MeshFile, noteNonFinitePositions, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { TextScanner } from './text.js';
 
 /** Every PLY type name, old (`uchar`) and new (`uint8`), and the type of the values it holds. */
@@ -475,7 +475,7 @@ function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progres
     if (properties.length === 0) continue;
     for (let row = 0; row < rows; row++) {
       if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${row} of ${rows} rows of element '${name}'`);
-      if ((row & 0xffff) === 0xffff) progress(scanner.pos / bytes.length);
+      if ((row & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
       for (let i = 0; i < properties.length; i++) {
         const p = properties[i];
         if (scanner.atLineEnd()) {
@@ -548,7 +548,7 @@ function readBinaryBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progre
       continue;
     }
     for (let row = 0; row < rows; row++) {
-      if ((row & 0xffff) === 0xffff) progress(offset / end);
+      if ((row & PROGRESS_ROWS) === PROGRESS_ROWS) progress(offset / end);
       for (let i = 0; i < properties.length; i++) {
         const p = properties[i];
         const { type, countType } = p.property;

@@ -23,7 +23,7 @@
 import { plural } from '../report.js';
 import { BinaryReader, viewOf } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type MeshFile, noteNonFinitePositions, type Progress } from './mesh-file.js';
+import { type MeshFile, noteNonFinitePositions, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { TextScanner, decodeText } from './text.js';
 
 const HEADER_BYTES = 80;
@@ -149,7 +149,7 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
     }
     if (keyword !== 'facet') scanner.fail(`expected 'facet' or 'endsolid', found '${scanner.token(at)}'`, at);
     const facet = faceStarts.length - 1;
-    if ((facet & 0xffff) === 0xffff) progress(scanner.pos / bytes.length);
+    if ((facet & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
     expect('normal');
     readPoint(normals, `the normal of facet ${facet}`);
     expect('outer');
