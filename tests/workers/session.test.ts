@@ -146,6 +146,14 @@ describe('loading files for the session', () => {
     expect(fractions.at(-1)).toBe(1);
     expect([...fractions].sort((a, b) => a - b)).toEqual(fractions);
   });
+
+  // (binary files are read in bulk, a few milliseconds per million rows: they need no finer steps)
+  it.each(['off', 'ply', 'obj'] as const)('reports a big %s text file in small steps, none a tenth of the work', (format) => {
+    const fractions: number[] = [];
+    loadFile(writeSoup(torus(600, 600), format), `big.${format}`, (event) => fractions.push(event.fraction));
+    const steps = fractions.slice(1).map((f, i) => f - fractions[i]!);
+    expect(Math.max(...steps)).toBeLessThan(0.1);
+  });
 });
 
 describe('snapshots cross the worker boundary by transfer', () => {
