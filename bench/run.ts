@@ -8,8 +8,9 @@ import { type BenchCase, runCase } from './harness.js';
 import { buildCases } from './cases/build.js';
 import { cutCases } from './cases/cut.js';
 import { parseCases } from './cases/parse.js';
+import { subdivisionCases } from './cases/subdivision.js';
 
-const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases, cutCases];
+const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases, subdivisionCases, cutCases];
 
 const args = process.argv.slice(2);
 const json = args.includes('--json');

@@ -2,6 +2,7 @@
 import { convert } from './convert.js';
 import { cutCommand } from './cut.js';
 import { stats } from './stats.js';
+import { subdivideCommand } from './subdivide.js';
 import { validateCommand } from './validate.js';
 
 export interface Command {
@@ -15,5 +16,6 @@ export const commands: Record<string, Command> = {
   stats,
   validate: validateCommand,
   convert,
+  subdivide: subdivideCommand,
   cut: cutCommand,
 };

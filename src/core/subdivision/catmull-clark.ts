@@ -1,0 +1,149 @@
+/**
+ * Catmull-Clark subdivision (Edwin Catmull and Jim Clark, 1978), for any polygons: a face of n
+ * sides becomes n quads, so after one level every face is a quad; repeated levels converge to a
+ * bicubic B-spline surface where every vertex has four neighbours.
+ * ```
+ *     v ─────── w          v ── e ── w
+ *     │         │          │    │    │
+ *     │    f    │    →     e ── f ── e        f: face point, e: edge points, v, w: old vertices
+ *     │         │          │    │    │
+ *     u ─────── x          u ── e ── x
+ * ```
+ * The rules, all from the old mesh:
+ * - face point: the mean of the face's corners;
+ * - edge point: the mean of the edge's two ends and the two face points beside it;
+ * - old vertex P with n edges: (F + 2R + (n − 3)·P) / n, where F is the mean of the n face points
+ *   around it and R the mean of the midpoints of its n edges.
+ * On the boundary the rules become the cubic B-spline of the boundary polygon: an edge point is
+ * the midpoint, a vertex takes 3/4 of itself and 1/8 of its two boundary neighbours, and a corner
+ * of valence 2 stays where it is.
+ *
+ * Phases: add face points · split every edge at its edge point · connect the face points ·
+ * move the old vertices. Counts after one level: V' = V + E + F, E' = 2E + C, F' = C, where
+ * C = Σ face degrees (the halfedges that have a face; 2E on a closed mesh).
+ */
+import type { HalfedgeMesh } from '../mesh.js';
+import type { Operation } from '../operation.js';
+import { startLevel } from './preconditions.js';
+import { blendedAttributes, boundaryVertexRule, neighbourSums, storeValues } from './stencil.js';
+import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
+
+/**
+ * One level of Catmull-Clark subdivision, as a steppable operation that edits `mesh` in place.
+ * @example runOperation(catmullClark(mesh)); // every face a quad
+ */
+export function catmullClark(mesh: HalfedgeMesh): Operation {
+  return catmullClarkLevel(mesh, true);
+}
+
+/** The phases of one level; `listIds` false leaves the phases' id lists out (a run straight through). */
+export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
+  startLevel(mesh);
+  const V = mesh.vertexSlots;
+  const E = mesh.edgeSlots;
+  const F = mesh.faceSlots;
+  const attributes = blendedAttributes(mesh);
+
+  // reserve memory: one quad per face corner, at most one corner per halfedge (exactly so when
+  // the mesh is closed; memory reserved and never written costs nothing)
+  mesh.reserve({ vertices: V + F + E, edges: 4 * E, faces: 2 * E });
+
+  // compute face vertices (vertex V + f for face f)
+  const facePoints = addFacePoints(mesh, 'all', listIds);
+  yield {
+    name: 'add face points',
+    explanation:
+      'Each face gets a new point at the mean of its corners, not yet joined to anything. ' +
+      'A vertex without edges is allowed in a halfedge mesh: its halfedge is simply -1 until the points are connected.',
+    ...facePoints,
+  };
+
+  // the old vertices move last, by a rule that reads their old edges and faces: compute it now
+  const vertexPoints = attributes.map((a) => catmullClarkVertexPoints(mesh, a.data, V));
+
+  // split edges at their edge points (vertex V + F + e for edge e)
+  const split = splitEdges(mesh, 'all', 2, listIds);
+  for (const a of attributes) moveToEdgePoints(mesh, a.data, E, V, V + F);
+  yield {
+    name: 'split every edge at its edge point',
+    explanation:
+      'Each edge gets a new vertex at the mean of its two ends and the two face points beside it (the midpoint, on the boundary). ' +
+      'Every face now has twice as many sides, its corners alternating between old vertices and edge points.',
+    ...split,
+  };
+
+  // split faces
+  yield {
+    name: 'connect the face points',
+    explanation:
+      'Each face point is joined to the edge points around it, cutting a face of n sides into n quads. ' +
+      'From now on every face is a quad, whatever the mesh started with.',
+    ...fanFaces(mesh, 'all', V, 2, listIds),
+  };
+
+  // move the old vertices
+  storeValues(attributes, vertexPoints, 0);
+  yield {
+    name: 'move the old vertices',
+    explanation:
+      'Each old vertex P with n edges moves to (F + 2R + (n − 3)P) / n, ' +
+      'where F averages the face points around it and R the midpoints of its old edges. ' +
+      'Boundary vertices follow the boundary curve instead (3/4 of themselves, 1/8 of each boundary neighbour), and corners stay put.',
+    moved: { vertices: range(listIds, 0, V) },
+  };
+}
+
+/**
+ * Moves each interior edge point from the midpoint, where the split put it, to the mean of the
+ * edge's ends and its two face points: halfway between the midpoint and the face points' mean.
+ * The split kept both halfedges of edge e in their faces, so those still name the face points.
+ */
+function moveToEdgePoints(mesh: HalfedgeMesh, x: Float64Array | Float32Array, E: number, firstFacePoint: number, firstEdgePoint: number): void {
+  const { heFace } = mesh;
+  for (let e = 0; e < E; e++) {
+    const f0 = heFace[2 * e];
+    const f1 = heFace[2 * e + 1];
+    // boundary edge: the midpoint is the edge point
+    if (f0 === -1 || f1 === -1) continue;
+    const m = 3 * (firstEdgePoint + e);
+    const p = 3 * (firstFacePoint + f0);
+    const q = 3 * (firstFacePoint + f1);
+    x[m] = (x[m] + (x[p] + x[q]) / 2) / 2;
+    x[m + 1] = (x[m + 1] + (x[p + 1] + x[q + 1]) / 2) / 2;
+    x[m + 2] = (x[m + 2] + (x[p + 2] + x[q + 2]) / 2) / 2;
+  }
+}
+
+/**
+ * The new place of each old vertex (vertices `0 … firstFacePoint − 1`), three numbers per vertex,
+ * read from the old mesh and the face points (vertex `firstFacePoint + f` for face f). For an interior vertex with n edges to
+ * neighbours Q_i and n faces with points F_i, (F + 2R + (n − 3)P)/n expands to
+ * (ΣQ_i + ΣF_i)/n² + (n − 2)/n · P: both sums are gathered in one pass over the edges.
+ */
+function catmullClarkVertexPoints(mesh: HalfedgeMesh, x: ArrayLike<number>, firstFacePoint: number): Float64Array {
+  const { heFace, vHalfedge } = mesh;
+  const { sums: out, valence } = neighbourSums(mesh, x, firstFacePoint, firstFacePoint);
+  for (let v = 0; v < firstFacePoint; v++) {
+    const o = 3 * v;
+    const start = vHalfedge[v];
+    // isolated vertex?
+    if (start === -1) {
+      out[o] = x[o];
+      out[o + 1] = x[o + 1];
+      out[o + 2] = x[o + 2];
+    }
+    // boundary vertex?
+    else if (heFace[start] === -1) {
+      boundaryVertexRule(mesh, x, v, out);
+    }
+    // interior vertex
+    else {
+      const ring = 1 / (valence[v] * valence[v]);
+      const self = (valence[v] - 2) / valence[v];
+      out[o] = ring * out[o] + self * x[o];
+      out[o + 1] = ring * out[o + 1] + self * x[o + 1];
+      out[o + 2] = ring * out[o + 2] + self * x[o + 2];
+    }
+  }
+  return out;
+}

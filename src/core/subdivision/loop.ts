@@ -1,0 +1,162 @@
+/**
+ * Loop subdivision (Charles Loop, 1987), for triangle meshes: each triangle becomes four, and
+ * repeated levels converge to a smooth surface (a quartic box spline where every vertex has six
+ * neighbours).
+ * ```
+ *          c                    c                      c
+ *         / \                  / \                    / \
+ *        /   \     split      m   m      cut the     m───m
+ *       /     \    edges     /     \     corners    / \ / \
+ *      a───────b    →       a───m───b      →       a───m───b
+ * ```
+ * The new points are placed by stencils, weighted sums over the old mesh:
+ * - the point on edge ab (an *odd* vertex): 3/8 of a and b, 1/8 of the two opposite corners c, d;
+ * - an old (*even*) vertex with n neighbours: (1 − nβ) of itself and β of each neighbour, with
+ *   Loop's β = (1/n)(5/8 − (3/8 + ¼·cos(2π/n))²), which is 1/16 for n = 6.
+ * On the boundary the stencils become the cubic B-spline of the boundary polygon: an edge point is
+ * the midpoint, a vertex takes 3/4 of itself and 1/8 of its two boundary neighbours.
+ *
+ * Phases: split every edge · cut the corners · place the edge points · move the old vertices.
+ * Counts after one level: V' = V + E, E' = 2E + 3F, F' = 4F.
+ */
+import type { HalfedgeMesh } from '../mesh.js';
+import type { Operation } from '../operation.js';
+import { cutCorners, range, splitEdges } from './topology.js';
+import { requireApplicable, startLevel } from './preconditions.js';
+import { blendedAttributes, boundaryVertexRule, neighbourSums, storeValues } from './stencil.js';
+
+/**
+ * One level of Loop subdivision, as a steppable operation that edits `mesh` in place.
+ * @example runOperation(loopSubdivision(mesh)); // F → 4F triangles
+ * @throws TopologyError when a face is not a triangle (nothing is changed).
+ */
+export function loopSubdivision(mesh: HalfedgeMesh): Operation {
+  requireApplicable(mesh, 'loop');
+  return loopLevel(mesh, true);
+}
+
+/** The phases of one level; `listIds` false leaves the phases' id lists out (a run straight through). */
+export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
+  startLevel(mesh);
+  const V = mesh.vertexSlots;
+  const E = mesh.edgeSlots;
+  const F = mesh.faceSlots;
+
+  // compute the new positions while the old one-rings are intact
+  const attributes = blendedAttributes(mesh);
+  const edgePoints = attributes.map((a) => loopEdgePoints(mesh, a.data));
+  const vertexPoints = attributes.map((a) => loopVertexPoints(mesh, a.data));
+
+  // reserve memory
+  mesh.reserve({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
+
+  // split edges
+  const split = splitEdges(mesh, 'all', 2, listIds);
+  yield {
+    name: 'split every edge',
+    explanation:
+      'Each edge gets a new vertex at its midpoint, so every triangle becomes a hexagon whose corners alternate between old and new vertices. ' +
+      'A halfedge mesh allows faces of any degree, so the mesh is still valid between the two steps of the refinement.',
+    ...split,
+  };
+
+  // split faces
+  yield {
+    name: 'cut the corners',
+    explanation:
+      'Three new edges join the edge points of each face, cutting off its corners: one triangle becomes four similar ones. ' +
+      'The mesh now has its final connectivity, but every point still sits on the old, flat triangles.',
+    ...cutCorners(mesh, listIds),
+  };
+
+  // place the new (odd) vertices
+  storeValues(attributes, edgePoints, V);
+  yield {
+    name: 'place the edge points',
+    explanation:
+      'Each edge point moves to 3/8 of the edge’s two ends plus 1/8 of the two corners facing the edge ' +
+      '(on the boundary it stays at the midpoint). ' +
+      'The weights come from the box spline that a regular triangle mesh converges to, and they use the old positions only.',
+    moved: { vertices: range(listIds, V, V + E) },
+  };
+
+  // move the old (even) vertices
+  storeValues(attributes, vertexPoints, 0);
+  yield {
+    name: 'move the old vertices',
+    explanation:
+      'Each old vertex moves towards the average of its old neighbours, by Loop’s weight β that depends only on how many neighbours it has. ' +
+      'Boundary vertices follow the boundary curve instead (3/4 of themselves, 1/8 of each boundary neighbour), so an open surface keeps its rim.',
+    moved: { vertices: range(listIds, 0, V) },
+  };
+}
+
+/** The odd stencil: the new point of each edge e, three numbers per edge, in edge order. */
+function loopEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64Array {
+  const { hePrev, heVertex, heFace } = mesh;
+  const E = mesh.edgeSlots;
+  const out = new Float64Array(3 * E);
+  for (let e = 0; e < E; e++) {
+    const h = 2 * e;
+    const t = h + 1;
+    const o = 3 * e;
+    const a = 3 * heVertex[h];
+    const b = 3 * heVertex[t];
+    // boundary edge?
+    if (heFace[h] === -1 || heFace[t] === -1) {
+      out[o] = (x[a] + x[b]) / 2;
+      out[o + 1] = (x[a + 1] + x[b + 1]) / 2;
+      out[o + 2] = (x[a + 2] + x[b + 2]) / 2;
+      continue;
+    }
+    // interior edge: the corner facing the edge in each triangle starts the halfedge before it
+    const c = 3 * heVertex[hePrev[h]];
+    const d = 3 * heVertex[hePrev[t]];
+    out[o] = (3 / 8) * (x[a] + x[b]) + (1 / 8) * (x[c] + x[d]);
+    out[o + 1] = (3 / 8) * (x[a + 1] + x[b + 1]) + (1 / 8) * (x[c + 1] + x[d + 1]);
+    out[o + 2] = (3 / 8) * (x[a + 2] + x[b + 2]) + (1 / 8) * (x[c + 2] + x[d + 2]);
+  }
+  return out;
+}
+
+/** The even stencil: the new place of each old vertex, three numbers per vertex. */
+function loopVertexPoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64Array {
+  const { heFace, vHalfedge } = mesh;
+  // sum the old neighbours of every vertex, edge by edge
+  const { sums: out, valence } = neighbourSums(mesh, x, mesh.vertexSlots);
+  for (let v = 0; v < mesh.vertexSlots; v++) {
+    const o = 3 * v;
+    const start = vHalfedge[v];
+    // isolated vertex?
+    if (start === -1) {
+      out[o] = x[o];
+      out[o + 1] = x[o + 1];
+      out[o + 2] = x[o + 2];
+    }
+    // boundary vertex?
+    else if (heFace[start] === -1) {
+      boundaryVertexRule(mesh, x, v, out);
+    }
+    // interior vertex: (1 − nβ) of itself, β of each neighbour
+    else {
+      const beta = loopBeta(valence[v]);
+      const self = 1 - valence[v] * beta;
+      out[o] = self * x[o] + beta * out[o];
+      out[o + 1] = self * x[o + 1] + beta * out[o + 1];
+      out[o + 2] = self * x[o + 2] + beta * out[o + 2];
+    }
+  }
+  return out;
+}
+
+const betas: number[] = [];
+
+/** Loop's weight of each neighbour of a vertex with `n` neighbours. */
+function loopBeta(n: number): number {
+  let beta = betas[n];
+  if (beta === undefined) {
+    const w = 3 / 8 + Math.cos((2 * Math.PI) / n) / 4;
+    beta = betas[n] = (5 / 8 - w * w) / n;
+  }
+  return beta;
+}

@@ -1,0 +1,66 @@
+/**
+ * What a subdivision level needs before it starts: the faces its scheme can split (the predicate
+ * `cannotSubdivide`, beside the operations that throw its sentence) and a compact mesh.
+ */
+import { InvalidInputError, TopologyError } from '../errors.js';
+import type { HalfedgeMesh } from '../mesh.js';
+
+export type SubdivisionScheme = 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3';
+
+export const subdivisionSchemes: readonly SubdivisionScheme[] = ['loop', 'catmull-clark', 'butterfly', 'sqrt3'];
+
+const schemeNames: Record<SubdivisionScheme, string> = {
+  loop: 'Loop subdivision',
+  'catmull-clark': 'Catmull-Clark subdivision',
+  butterfly: 'Butterfly subdivision',
+  sqrt3: '√3 subdivision',
+};
+
+/**
+ * Null when `scheme` applies to `mesh`, else a sentence saying why not. Catmull-Clark takes any
+ * polygons; Loop, Butterfly and √3 need triangles.
+ * @example cannotSubdivide(buildMesh(cube()).mesh, 'loop')
+ *   // "Loop subdivision needs triangles; f0 is a quad. Triangulate the mesh first."
+ * @throws InvalidInputError for an unknown scheme.
+ */
+export function cannotSubdivide(mesh: HalfedgeMesh, scheme: SubdivisionScheme): string | null {
+  if (!Object.hasOwn(schemeNames, scheme)) unknownScheme(scheme);
+  if (scheme === 'catmull-clark') return null;
+  const { heNext, fHalfedge, fDeleted } = mesh;
+  for (let f = 0; f < mesh.faceSlots; f++) {
+    if (fDeleted[f]) continue;
+    const h = fHalfedge[f];
+    if (heNext[heNext[heNext[h]]] !== h) {
+      return `${schemeNames[scheme]} needs triangles; f${f} is ${polygonName(mesh.faceDegree(f))}. Triangulate the mesh first.`;
+    }
+  }
+  return null;
+}
+
+/** Throws the error for a scheme name outside `SubdivisionScheme` (from untyped callers). */
+export function unknownScheme(scheme: string): never {
+  throw new InvalidInputError(`unknown subdivision scheme '${scheme}': use ${subdivisionSchemes.join(', ')}`);
+}
+
+/** Throws the `cannotSubdivide` sentence as a `TopologyError` when `scheme` does not apply. */
+export function requireApplicable(mesh: HalfedgeMesh, scheme: SubdivisionScheme): void {
+  const reason = cannotSubdivide(mesh, scheme);
+  if (reason !== null) throw new TopologyError(reason);
+}
+
+/**
+ * Readies the mesh for one level: compacts it (new elements are numbered after the old ones by
+ * arithmetic, which needs ids without gaps) and removes its halfedge and edge attributes, which
+ * the schemes do not define on the corners and edges they create.
+ */
+export function startLevel(mesh: HalfedgeMesh): void {
+  if (!mesh.isCompact) mesh.compact();
+  for (const set of [mesh.halfedgeAttributes, mesh.edgeAttributes]) {
+    for (const { name } of [...set]) set.remove(name);
+  }
+}
+
+function polygonName(degree: number): string {
+  const names: Record<number, string> = { 4: 'a quad', 5: 'a pentagon', 6: 'a hexagon' };
+  return names[degree] ?? `a polygon of ${degree} sides`;
+}

@@ -1,0 +1,419 @@
+/**
+ * The topology the subdivision schemes share, each step one bulk pass over the arrays:
+ *
+ * - `splitEdges`: every listed edge becomes `pieces` edges joined by new vertices (Loop, Butterfly
+ *   and Catmull-Clark split every edge in two; √3 splits the boundary in three);
+ * - `cutCorners`: each triangle, its edges split, becomes four triangles (Loop, Butterfly);
+ * - `addFacePoints` and `fanFaces`: a new vertex in each listed face, joined to every corner
+ *   (√3: each triangle becomes three) or to every other corner (Catmull-Clark: a split n-gon
+ *   becomes n quads).
+ *
+ * No step searches for anything: the ids of the new elements follow from the old ones by
+ * arithmetic (the new vertex on edge `e` is `V + e`, the three edges that cut the corners of face
+ * `f` are `2E + 3f … 2E + 3f + 2`), so each pass writes every pointer of an element once, in a plain
+ * loop. Each leaves a mesh that passes `validate()` (faces may have any number of sides in
+ * between), and returns the ids it created and rewired for the phase that calls it, when asked
+ * (`listIds`): a run straight through skips them, since the lists of a level of a million faces
+ * take tens of megabytes of fresh memory, and filling fresh memory is what a level spends most on.
+ *
+ * Vertex attributes: a new vertex takes the linear blend of its sources for attributes of three
+ * floats that interpolate linearly (positions, normals, colours as floats; see `stencil.ts`) and the
+ * first source's value for the others. A face cut into pieces hands its face attributes to every
+ * piece.
+ */
+import type { AttributeArray } from '../attributes.js';
+import type { HalfedgeMesh } from '../mesh.js';
+import { type ElementIds, idRange } from '../operation.js';
+import { isBlended } from './stencil.js';
+
+/** The ids a topology step reports: what it added, and which existing elements it re-linked. */
+export interface TopologyChange {
+  created: ElementIds;
+  rewired: ElementIds;
+}
+
+/** `idRange(start, end)` when ids are listed, else nothing. */
+export function range(listIds: boolean, start: number, end: number): Int32Array | undefined {
+  return listIds ? idRange(start, end) : undefined;
+}
+
+/** The first id of each kind that `appendSlots` added. */
+interface FirstIds {
+  vertex: number;
+  edge: number;
+  face: number;
+}
+
+/**
+ * Appends live, not yet linked slots (room is reserved when needed; a scheme reserves its final
+ * counts up front so the arrays grow once per level). The caller links every one.
+ */
+export function appendSlots(mesh: HalfedgeMesh, vertices: number, edges: number, faces: number): FirstIds {
+  const first = { vertex: mesh.vertexSlots, edge: mesh.edgeSlots, face: mesh.faceSlots };
+  mesh.reserve({ vertices: first.vertex + vertices, edges: first.edge + edges, faces: first.face + faces });
+  mesh.vertexSlots += vertices;
+  mesh.edgeSlots += edges;
+  mesh.faceSlots += faces;
+  mesh.vDeleted.fill(0, first.vertex, mesh.vertexSlots);
+  mesh.eDeleted.fill(0, first.edge, mesh.edgeSlots);
+  mesh.fDeleted.fill(0, first.face, mesh.faceSlots);
+  return first;
+}
+
+/**
+ * Splits each edge of `edges` (or every edge, in id order) into `pieces` edges of equal length,
+ * inserting `pieces − 1` vertices.
+ *
+ * Ids: the first piece keeps the edge's id and runs from the origin `a` of its even halfedge `2e`;
+ * for the `i`-th listed edge, the new vertices (from `a` towards the other end `b`) are
+ * `V + (pieces − 1)·i + 0, 1, …` and the other pieces (after the first) are edges
+ * `E + (pieces − 1)·i + 0, 1, …`, where V and E are the counts before the split. Each piece's even
+ * halfedge runs from `a` towards `b`, as `2e` did.
+ *
+ * ```
+ *   before:  a ───── 2e ──────► b      after (2 pieces):  a ── 2e ──► m ── 2e' ──► b
+ *            a ◄──── 2e+1 ───── b                         a ◄─ 2e+1 ─ m ◄─ 2e'+1 ─ b
+ * ```
+ * `2e + 1` had to change its origin to `m`: its twin `2e` now ends at `m`, and twins run opposite.
+ *
+ * Every face whose edges were split afterwards starts (`fHalfedge`) at a new vertex, which is where
+ * `cutCorners` and `fanFaces` begin their walk.
+ */
+export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces: number, listIds: boolean): TopologyChange {
+  const V = mesh.vertexSlots;
+  const E = mesh.edgeSlots;
+  const F = mesh.faceSlots;
+  const list = edges === 'all' ? null : edges;
+  const count = list === null ? E : list.length;
+  const edgeAt = (i: number) => (list === null ? i : list[i]);
+  const perEdge = pieces - 1;
+  const added = perEdge * count;
+  appendSlots(mesh, added, added, 0);
+  placeOnEdges(mesh, count, edgeAt, pieces, V);
+
+  const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
+  // where each old edge is in the list (-1: not split), to find the pieces of a neighbour
+  const order = list === null ? null : new Int32Array(E).fill(-1);
+  if (order !== null) for (let i = 0; i < count; i++) order[edgeAt(i)] = i;
+  const isSplit = (g: number) => order === null || order[g >> 1] >= 0;
+  // old halfedge g: the piece that now starts where g started / ends where g ended. Those differ
+  // from g only for an odd / even g of a split edge: the last piece of the i-th listed edge is
+  // edge E + perEdge·i + perEdge − 1.
+  const firstPieceOf = (g: number) => {
+    if ((g & 1) === 0 || !isSplit(g)) return g;
+    const i = order === null ? g >> 1 : order[g >> 1];
+    return 2 * (E + perEdge * i + perEdge - 1) + 1;
+  };
+  const lastPieceOf = (g: number) => {
+    if ((g & 1) === 1 || !isSplit(g)) return g;
+    const i = order === null ? g >> 1 : order[g >> 1];
+    return 2 * (E + perEdge * i + perEdge - 1);
+  };
+  // re-linked: both halfedges of each split edge, the neighbours not split, the ends and faces
+  const rewiredNeighbours: number[] = [];
+  const rewiredVertices: number[] = [];
+  const rewiredFaces = listIds ? new Uint8Array(F) : null;
+
+  // each iteration reads only the old pointers of its own two halfedges (a neighbour that is split
+  // too links itself), so the arrays can be rewritten in place
+  for (let i = 0; i < count; i++) {
+    const h = 2 * edgeAt(i);
+    const t = h + 1;
+    const hNext = heNext[h];
+    const hPrev = hePrev[h];
+    const tNext = heNext[t];
+    const tPrev = hePrev[t];
+    const b = heVertex[t];
+    const hFace = heFace[h];
+    const tFace = heFace[t];
+
+    // walk from a to b: `forward` is the even halfedge of the piece before new vertex m
+    let forward = h;
+    for (let p = 0; p < perEdge; p++) {
+      const m = V + perEdge * i + p;
+      const next = 2 * (E + perEdge * i + p); // even halfedge of the piece after m
+      const back = forward ^ 1; // the piece before m, run backwards: it starts at m now
+      heVertex[next] = m;
+      heFace[next] = hFace;
+      heNext[forward] = next;
+      hePrev[next] = forward;
+      heVertex[back] = m;
+      heFace[next + 1] = tFace;
+      heNext[next + 1] = back;
+      hePrev[back] = next + 1;
+      // boundary vertex? its halfedge must be the outgoing boundary one
+      vHalfedge[m] = tFace === -1 ? back : next;
+      forward = next;
+    }
+    const bOut = forward ^ 1; // the last piece, run backwards, starts at b
+    heVertex[bOut] = b;
+
+    // splice the two chains into the loops around them
+    heNext[forward] = firstPieceOf(hNext);
+    hePrev[h] = lastPieceOf(hPrev);
+    heNext[t] = firstPieceOf(tNext);
+    hePrev[bOut] = lastPieceOf(tPrev);
+    if (!isSplit(hNext)) {
+      hePrev[hNext] = forward;
+      if (listIds) rewiredNeighbours.push(hNext);
+    }
+    if (!isSplit(tPrev)) {
+      heNext[tPrev] = bOut;
+      if (listIds) rewiredNeighbours.push(tPrev);
+    }
+    if (vHalfedge[b] === t) {
+      vHalfedge[b] = bOut;
+      if (listIds) rewiredVertices.push(b);
+    }
+    // start each face at a new vertex
+    if (hFace !== -1) {
+      fHalfedge[hFace] = heNext[h];
+      if (rewiredFaces !== null) rewiredFaces[hFace] = 1;
+    }
+    if (tFace !== -1) {
+      fHalfedge[tFace] = t;
+      if (rewiredFaces !== null) rewiredFaces[tFace] = 1;
+    }
+  }
+  if (!listIds) return { created: {}, rewired: {} };
+  const rewiredHalfedges = new Int32Array(2 * count + rewiredNeighbours.length);
+  for (let i = 0; i < count; i++) {
+    rewiredHalfedges[2 * i] = 2 * edgeAt(i);
+    rewiredHalfedges[2 * i + 1] = 2 * edgeAt(i) + 1;
+  }
+  rewiredHalfedges.set(rewiredNeighbours, 2 * count);
+  return {
+    created: { vertices: idRange(V, V + added), edges: idRange(E, E + added) },
+    rewired: { halfedges: rewiredHalfedges, vertices: Int32Array.from(rewiredVertices), faces: marked(rewiredFaces!) },
+  };
+}
+
+/**
+ * Puts the new vertices of `splitEdges` evenly along their edges (run before the split): blended
+ * attributes are interpolated, the others copied from the edge's first end.
+ */
+function placeOnEdges(mesh: HalfedgeMesh, count: number, edgeAt: (i: number) => number, pieces: number, firstVertex: number): void {
+  const { heVertex } = mesh;
+  for (const attribute of mesh.vertexAttributes) {
+    const { data, itemSize: n } = attribute;
+    const blend = isBlended(attribute);
+    for (let i = 0; i < count; i++) {
+      const a = heVertex[2 * edgeAt(i)];
+      const b = heVertex[2 * edgeAt(i) + 1];
+      for (let p = 1; p < pieces; p++) {
+        const m = firstVertex + (pieces - 1) * i + p - 1;
+        if (!blend) {
+          copyItem(data, n, m, a);
+          continue;
+        }
+        const t = p / pieces;
+        data[3 * m] = (1 - t) * data[3 * a] + t * data[3 * b];
+        data[3 * m + 1] = (1 - t) * data[3 * a + 1] + t * data[3 * b + 1];
+        data[3 * m + 2] = (1 - t) * data[3 * a + 2] + t * data[3 * b + 2];
+      }
+    }
+  }
+}
+
+/**
+ * Cuts the three corners off every face, after `splitEdges` split every edge of a triangle mesh in
+ * two: each face is then a hexagon whose corners alternate between edge points `m` and old
+ * vertices, starting (`fHalfedge`) at an edge point.
+ * ```
+ *            c                          c
+ *           / \                        / \             the middle triangle keeps the face id f;
+ *         m2   m1          →         m2───m1           the corner triangle after m_i (at b, c
+ *         /     \                    / \ f / \         and a) is face F + 3f + i
+ *        a ──m0── b                 a ──m0─── b
+ * ```
+ * New edge `E + 3f + i` joins `m_i` and `m_(i+1)`: its even halfedge runs `m_i → m_(i+1)` inside the
+ * middle triangle, its odd one back along the corner triangle.
+ */
+export function cutCorners(mesh: HalfedgeMesh, listIds: boolean): TopologyChange {
+  const F = mesh.faceSlots;
+  const first = appendSlots(mesh, 0, 3 * F, 3 * F);
+  const E = first.edge;
+  const { heNext, hePrev, heVertex, heFace, fHalfedge } = mesh;
+  const copyFaceAttributes = mesh.faceAttributes.size > 0;
+  const rewired = listIds ? new Int32Array(6 * F) : null; // the hexagons' halfedges, all re-linked
+
+  for (let f = 0; f < F; f++) {
+    const firstEdge = E + 3 * f;
+    let g = fHalfedge[f]; // m_i → corner i
+    for (let i = 0; i < 3; i++) {
+      const gOut = heNext[g]; // corner i → m_(i+1)
+      const gNext = heNext[gOut]; // m_(i+1) → corner i+1
+      const inner = 2 * (firstEdge + i); // m_i → m_(i+1), in the middle triangle
+      const outer = inner + 1; // m_(i+1) → m_i, closes the corner triangle
+      const corner = F + 3 * f + i;
+      heVertex[inner] = heVertex[g];
+      heVertex[outer] = heVertex[gNext];
+      heNext[gOut] = outer;
+      hePrev[outer] = gOut;
+      heNext[outer] = g;
+      hePrev[g] = outer;
+      heFace[g] = corner;
+      heFace[gOut] = corner;
+      heFace[outer] = corner;
+      fHalfedge[corner] = g;
+      heFace[inner] = f;
+      heNext[inner] = i < 2 ? inner + 2 : 2 * firstEdge;
+      hePrev[inner] = i > 0 ? inner - 2 : 2 * firstEdge + 4;
+      if (copyFaceAttributes) mesh.faceAttributes.copy(corner, f);
+      if (rewired !== null) {
+        rewired[6 * f + 2 * i] = g;
+        rewired[6 * f + 2 * i + 1] = gOut;
+      }
+      g = gNext;
+    }
+    fHalfedge[f] = 2 * firstEdge;
+  }
+  return {
+    created: { edges: range(listIds, E, E + 3 * F), faces: range(listIds, F, 4 * F) },
+    rewired: { halfedges: rewired ?? undefined, faces: range(listIds, 0, F) },
+  };
+}
+
+/**
+ * Adds one vertex per listed face (or every face, in id order) at the mean of its corners (vertex
+ * `V + i` for the i-th face), not yet joined to anything: an isolated vertex, which a valid mesh
+ * may hold.
+ */
+export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', listIds: boolean): TopologyChange {
+  const count = faces === 'all' ? mesh.faceSlots : faces.length;
+  const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
+  const { vertex: V } = appendSlots(mesh, count, 0, 0);
+  const { heNext, heVertex, fHalfedge, vHalfedge } = mesh;
+  vHalfedge.fill(-1, V, V + count);
+  for (const attribute of mesh.vertexAttributes) {
+    const { data, itemSize: n } = attribute;
+    if (!isBlended(attribute)) {
+      for (let i = 0; i < count; i++) copyItem(data, n, V + i, heVertex[fHalfedge[faceAt(i)]]);
+      continue;
+    }
+    for (let i = 0; i < count; i++) {
+      const start = fHalfedge[faceAt(i)];
+      let x = 0;
+      let y = 0;
+      let z = 0;
+      let degree = 0;
+      let h = start;
+      do {
+        const v = 3 * heVertex[h];
+        x += data[v];
+        y += data[v + 1];
+        z += data[v + 2];
+        degree++;
+        h = heNext[h];
+      } while (h !== start);
+      const o = 3 * (V + i);
+      data[o] = x / degree;
+      data[o + 1] = y / degree;
+      data[o + 2] = z / degree;
+    }
+  }
+  return { created: { vertices: range(listIds, V, V + count) }, rewired: {} };
+}
+
+/**
+ * Joins the point `firstCentre + i` to the corners of the i-th listed face (or of face i, for
+ * every face): with `stride` 1 to every corner (a triangle becomes three triangles), with `stride`
+ * 2 to every other corner, starting at the face's halfedge (after `splitEdges`, the edge points: a
+ * split n-gon becomes n quads).
+ * ```
+ *   stride 2:   v ── m1 ── w            v ── m1 ── w
+ *               │          │            │    │     │
+ *               m0   c     m2     →     m0 ─ c ─── m2
+ *               │          │            │    │     │
+ *               u ── m3 ── x            u ── m3 ── x
+ * ```
+ * Each spoke is a new edge whose even halfedge leaves the centre, numbered face after face; the
+ * piece of the face after its first spoke keeps the face id, the others are new faces, in order.
+ */
+export function fanFaces(mesh: HalfedgeMesh, faces: Int32Array | 'all', firstCentre: number, stride: number, listIds: boolean): TopologyChange {
+  const count = faces === 'all' ? mesh.faceSlots : faces.length;
+  const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
+  const spokes = cornersOf(mesh, faces) / stride;
+  const first = appendSlots(mesh, 0, spokes, spokes - count);
+  const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
+  const copyFaceAttributes = mesh.faceAttributes.size > 0;
+  const rewired = listIds ? new Int32Array(stride * spokes) : null; // the faces' own halfedges, all re-linked
+
+  let spoke = 0; // spokes made so far: the next one is edge first.edge + spoke
+  let r = 0;
+  for (let i = 0; i < count; i++) {
+    const f = faceAt(i);
+    const centre = firstCentre + i;
+    const firstSpoke = 2 * (first.edge + spoke);
+    const start = fHalfedge[f];
+    let g = start;
+    do {
+      const piece = g === start ? f : first.face + spoke - i - 1;
+      const out = 2 * (first.edge + spoke); // centre → this corner
+      heVertex[out] = centre;
+      heVertex[out + 1] = heVertex[g];
+      heFace[out] = piece;
+      heNext[out] = g;
+      hePrev[g] = out;
+      // the face's own halfedges from this corner to the next one joined
+      let last = g;
+      heFace[g] = piece;
+      if (rewired !== null) rewired[r++] = g;
+      for (let s = 1; s < stride; s++) {
+        last = heNext[last];
+        heFace[last] = piece;
+        if (rewired !== null) rewired[r++] = last;
+      }
+      g = heNext[last];
+      const back = g === start ? firstSpoke + 1 : out + 3; // next corner → centre
+      heNext[last] = back;
+      hePrev[back] = last;
+      heNext[back] = out;
+      hePrev[out] = back;
+      heFace[back] = piece;
+      fHalfedge[piece] = out;
+      if (copyFaceAttributes && piece !== f) mesh.faceAttributes.copy(piece, f);
+      spoke++;
+    } while (g !== start);
+    vHalfedge[centre] = firstSpoke;
+  }
+  return {
+    created: {
+      edges: range(listIds, first.edge, first.edge + spokes),
+      faces: range(listIds, first.face, first.face + spokes - count),
+    },
+    rewired: {
+      halfedges: rewired ?? undefined,
+      vertices: range(listIds, firstCentre, firstCentre + count), // isolated until now
+      faces: !listIds ? undefined : faces === 'all' ? idRange(0, count) : faces,
+    },
+  };
+}
+
+/** The number of halfedges inside the listed faces (or all faces): the sum of their degrees. */
+function cornersOf(mesh: HalfedgeMesh, faces: Int32Array | 'all'): number {
+  let corners = 0;
+  if (faces === 'all') {
+    const { heFace } = mesh;
+    const halfedges = mesh.halfedgeSlots;
+    for (let h = 0; h < halfedges; h++) if (heFace[h] !== -1) corners++;
+  } else {
+    for (const f of faces) corners += mesh.faceDegree(f);
+  }
+  return corners;
+}
+
+/** The indices where `marks` is 1. */
+export function marked(marks: Uint8Array): Int32Array {
+  let count = 0;
+  for (let i = 0; i < marks.length; i++) count += marks[i];
+  const ids = new Int32Array(count);
+  let k = 0;
+  for (let i = 0; i < marks.length; i++) if (marks[i] === 1) ids[k++] = i;
+  return ids;
+}
+
+/** Element `dst` takes the `n` values of element `src`. */
+function copyItem(data: AttributeArray, n: number, dst: number, src: number): void {
+  for (let c = 0; c < n; c++) data[n * dst + c] = data[n * src + c];
+}
