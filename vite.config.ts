@@ -13,6 +13,7 @@ export default defineConfig({
       'three-mesh-bvh',
       'three/examples/jsm/controls/OrbitControls.js',
       'three/examples/jsm/renderers/CSS2DRenderer.js',
+      'three/examples/jsm/controls/TransformControls.js',
     ],
   },
 });

@@ -4,16 +4,22 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { Box3, Vector3 } from 'three';
-import { deserializeMesh, faceCentroid, faceNormal, type HalfedgeMesh } from '../core/index.js';
+import { deserializeMesh, faceCentroid, faceNormal, type HalfedgeMesh, meshToHalfedgeJSON } from '../core/index.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
 import { byId, el, replace } from './dom.js';
-import { hoverHighlight, selectionHighlight } from './highlights.js';
+import { hoverHighlight, phaseHighlight, quizHighlight, selectionHighlight } from './highlights.js';
+import { renderExport } from './panels/export.js';
 import { renderFileInfo } from './panels/file-info.js';
+import { renderHelp } from './panels/help.js';
+import { HistoryPanel } from './panels/history.js';
 import { renderHud } from './panels/hud.js';
 import { renderInspector } from './panels/inspector.js';
 import { renderLegend } from './panels/legend.js';
+import { OperationsPanel } from './panels/operations.js';
+import { QuizPanel } from './panels/quiz.js';
+import { StepperPanel } from './panels/stepper.js';
 import { RecordTables } from './panels/tables.js';
 import { TraversalPanel } from './panels/traversal.js';
 import { renderBreadcrumb, renderWalkButtons } from './panels/walk.js';
@@ -21,9 +27,12 @@ import type { Convention } from './records.js';
 import { ArrowLayer, halfedgesNear, MAX_ARROWS } from './scene/arrows.js';
 import { emptyHighlight, HighlightLayer, type HighlightSpec } from './scene/highlight.js';
 import { pick, type PickFilter } from './scene/picking.js';
+import { PlaneGizmo } from './scene/plane-gizmo.js';
 import { SurfaceLayer } from './scene/surface.js';
 import { Viewer } from './scene/viewer.js';
 import { elementName, exists, moveKeys, type Move, type Selection, walk, type WalkStep } from './selection.js';
+import { isRight } from './quiz.js';
+import { encodeViewState, type ViewState } from './share.js';
 
 export interface SampleModel {
   file: string;
@@ -57,8 +66,15 @@ export class App {
   private readonly selectionLayer = new HighlightLayer();
   private readonly hoverLayer = new HighlightLayer(0.55, 1.3);
   private readonly idLayer = new HighlightLayer();
+  private readonly phaseLayer = new HighlightLayer(0.85, 1.3);
   private readonly tables: RecordTables;
   private readonly traversal: TraversalPanel;
+  private readonly operations: OperationsPanel;
+  private readonly stepper: StepperPanel;
+  private readonly history: HistoryPanel;
+  readonly quiz: QuizPanel;
+  private readonly gizmo: PlaneGizmo;
+  private quizSpec: HighlightSpec | null = null;
   private traversalSpec: HighlightSpec | null = null;
   private markReady!: () => void;
 
@@ -75,7 +91,9 @@ export class App {
     };
 
     this.viewer = new Viewer(byId('viewport'));
-    this.viewer.add(this.surface.group, this.arrows.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
+    this.viewer.add(this.surface.group, this.arrows.group, this.phaseLayer.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
+    this.gizmo = new PlaneGizmo(this.viewer, (plane) => this.operations.setPlane(plane));
+    this.viewer.add(this.gizmo.group);
     this.viewer.controls.addEventListener('end', () => this.refreshArrowsIfPartial());
     this.tables = new RecordTables(byId('tables'), (s) => this.select(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
@@ -86,7 +104,33 @@ export class App {
         this.drawSelection();
       },
     );
+    this.operations = new OperationsPanel(byId('operations'), {
+      start: (request) => void this.start(request),
+      edit: (request) => void this.edit(request),
+      showPlane: (plane) => this.showPlane(plane),
+    });
+    this.stepper = new StepperPanel(byId('stepper'), {
+      step: () => void this.step(),
+      runToEnd: () => void this.runToEnd(),
+      cancel: () => void this.cancel(),
+      select: (s) => this.select(s),
+    });
+    this.history = new HistoryPanel(byId('history'), { undo: () => void this.undo(), redo: () => void this.redo(), jump: (i) => void this.jump(i) });
+    renderExport(byId('export'), {
+      meshBytes: (format) => this.client.exportMesh(format),
+      tablesJson: () => (this.mesh ? JSON.stringify(meshToHalfedgeJSON(this.mesh)) : '{}'),
+      png: () => new Promise((resolve, reject) => this.viewer.renderer.domElement.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('no picture'))), 'image/png')),
+      baseName: () => (this.snapshot?.file?.name ?? 'mesh').replace(/\.[^.]*$/, ''),
+    });
+    this.quiz = new QuizPanel(byId('quiz'), {
+      mesh: () => this.mesh,
+      showPath: (question, picked) => {
+        this.quizSpec = question && this.mesh ? quizHighlight(this.mesh, question.path, picked, picked !== null && isRight(question, picked)) : null;
+        this.drawSelection();
+      },
+    });
     renderLegend(byId('legend'));
+    renderHelp(byId('help-keys'));
     renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move));
     this.wireControls();
     this.drawPanels();
@@ -105,7 +149,10 @@ export class App {
     } catch (error) {
       this.hideProgress();
       if (error instanceof CancelledError) this.say(`${error.message}; the previous mesh stays.`);
-      else this.say(`Could not open ${name}: ${(error as Error).message}. The previous mesh stays.`, 'alert');
+      else {
+        this.say(`Could not open ${name}: ${(error as Error).message}. The previous mesh stays.`, 'alert');
+        this.showError(`Could not open ${name}`, `${(error as Error).message}. The mesh you had is still open.`);
+      }
       return false;
     } finally {
       this.hideProgress();
@@ -193,6 +240,9 @@ export class App {
     }
     this.refreshArrows();
     this.tables.setMesh(mesh, this.convention);
+    this.stepper.update(snapshot);
+    this.history.update(snapshot);
+    if (this.quiz.active) this.quiz.ask(); // the question's ids may be gone
     this.drawSelection();
     this.drawPanels();
     this.markReady();
@@ -232,12 +282,71 @@ export class App {
     this.frameMesh();
   }
 
+  /** Lecture-hall mode: large type, thick arrows, high contrast, full screen. */
   setPresentation(on: boolean): void {
     this.scale = on ? 1.8 : 1;
-    document.body.classList.toggle('presentation', on);
+    document.documentElement.classList.toggle('presentation', on);
+    byId('presentation').setAttribute('aria-pressed', String(on));
     this.surface.setEmphasis(this.scale);
     this.refreshArrows();
     this.drawSelection();
+    // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
+    if (on && !document.fullscreenElement) document.documentElement.requestFullscreen?.().catch(() => {});
+    if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
+  }
+
+  /** Shows or hides the cutting plane gizmo at `plane`. */
+  showPlane(plane: [number, number, number, number] | null): void {
+    if (plane && this.mesh) this.gizmo.show(this.mesh, plane);
+    else this.gizmo.hide();
+  }
+
+  /** Model, selection and camera, for a link that restores them. */
+  viewState(): ViewState {
+    const camera = this.viewer.camera;
+    const model = this.samples.some((s) => s.file === this.snapshot?.file?.name) ? this.snapshot!.file!.name : null;
+    return {
+      model,
+      selection: this.selection,
+      camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom },
+      mode: this.viewer.mode,
+    };
+  }
+
+  /** Puts back a selection and camera from a link (after its model is open). */
+  applyViewState(state: ViewState): void {
+    if (state.mode) {
+      this.viewer.setMode(state.mode);
+      byId('top-view').setAttribute('aria-pressed', String(state.mode === 'top'));
+      this.frameMesh();
+    }
+    if (state.camera) this.viewer.setCamera(state.camera.position, state.camera.target, state.camera.zoom);
+    if (state.selection && this.mesh && exists(this.mesh, state.selection)) this.select(state.selection);
+  }
+
+  shareLink(): string {
+    const state = this.viewState();
+    const url = `${location.origin}${location.pathname}?${encodeViewState(state)}`;
+    void navigator.clipboard?.writeText(url).catch(() => {});
+    this.say(
+      state.model
+        ? `Link copied: ${url}`
+        : `Link copied, without the model: a file you opened yourself never leaves this browser, so a link can only name a sample model. ${url}`,
+    );
+    return url;
+  }
+
+  showError(title: string, message: string): void {
+    byId('error-title').textContent = title;
+    byId('error-message').textContent = message;
+    byId('error-panel').hidden = false;
+  }
+
+  showTab(name: 'inspect' | 'operate' | 'quiz' | 'file'): void {
+    for (const tab of ['inspect', 'operate', 'quiz', 'file']) {
+      byId(`tab-${tab}`).setAttribute('aria-selected', String(tab === name));
+      byId(`pane-${tab}`).hidden = tab !== name;
+    }
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -294,6 +403,15 @@ export class App {
     this.drawPanels();
   }
 
+  /** A click on the canvas: answers the quiz when it is waiting, selects otherwise. */
+  click(x: number, y: number): void {
+    const question = this.quiz.active ? this.quiz.question : null;
+    const picked = this.pickAt(x, y, question ? question.answer.kind : this.filter);
+    if (question) {
+      if (picked) this.quiz.answer(picked);
+    } else this.select(picked);
+  }
+
   /** The element under a point of the canvas (CSS pixels), with the current filter. */
   pickAt(x: number, y: number, filter: PickFilter = this.filter): Selection | null {
     if (!this.mesh) return null;
@@ -321,8 +439,11 @@ export class App {
   private drawSelection(): void {
     const mesh = this.mesh;
     if (!mesh) return;
-    const spec = this.traversalSpec ?? (this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight());
+    const spec = this.quizSpec ?? this.traversalSpec ?? (this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight());
     this.selectionLayer.show(mesh, spec, this.scale);
+    const phase = this.snapshot?.phase;
+    if (phase && this.snapshot?.stepping) this.phaseLayer.show(mesh, phaseHighlight(mesh, phase), this.scale);
+    else this.phaseLayer.clear();
     this.idLayer.clear();
     if (this.showIds && mesh.nVertices + mesh.nFaces <= MAX_ID_LABELS) this.idLayer.show(mesh, idLabels(mesh), this.scale);
     this.viewer.requestRender();
@@ -332,6 +453,7 @@ export class App {
     const snapshot = this.snapshot;
     renderInspector(byId('record'), byId('convention-note'), this.mesh, this.selection, this.convention, (s) => this.select(s));
     renderBreadcrumb(byId('breadcrumb'), this.path);
+    if (this.mesh) this.operations.update(this.mesh, this.selection);
     if (snapshot) {
       renderHud(byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
       renderFileInfo(byId('file-info'), snapshot.file, snapshot.report, (s) => this.select(s));
@@ -403,13 +525,35 @@ export class App {
     byId('show-ids').addEventListener('click', () => this.toggleIds());
     byId('walk-back').addEventListener('click', () => this.back());
     byId('cancel').addEventListener('click', () => void this.cancel());
+    byId('presentation').addEventListener('click', () => this.setPresentation(this.scale === 1));
+    byId('share').addEventListener('click', () => this.shareLink());
+    byId('help').addEventListener('click', () => this.toggleHelp());
+    byId('help-close').addEventListener('click', () => this.toggleHelp(false));
+    byId('error-dismiss').addEventListener('click', () => (byId('error-panel').hidden = true));
+    for (const tab of ['inspect', 'operate', 'quiz', 'file'] as const) byId(`tab-${tab}`).addEventListener('click', () => this.showTab(tab));
+
+    // drop a file anywhere on the page
+    const hint = byId('drop-hint');
+    window.addEventListener('dragover', (event) => {
+      event.preventDefault();
+      hint.hidden = false;
+    });
+    window.addEventListener('dragleave', (event) => {
+      if (event.relatedTarget === null) hint.hidden = true;
+    });
+    window.addEventListener('drop', async (event) => {
+      event.preventDefault();
+      hint.hidden = true;
+      const file = event.dataTransfer?.files[0];
+      if (file) await this.openBytes(new Uint8Array(await file.arrayBuffer()), file.name);
+    });
 
     // a click picks; a drag orbits
     const canvas = this.viewer.renderer.domElement;
     let down: { x: number; y: number } | null = null;
     canvas.addEventListener('pointerdown', (event) => (down = { x: event.offsetX, y: event.offsetY }));
     canvas.addEventListener('pointerup', (event) => {
-      if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) this.select(this.pickAt(event.offsetX, event.offsetY));
+      if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) this.click(event.offsetX, event.offsetY);
       down = null;
     });
     let hoverPending = false;
@@ -425,19 +569,42 @@ export class App {
 
     window.addEventListener('keydown', (event) => {
       const target = event.target as HTMLElement;
-      if (target.closest('input, select, textarea') || event.ctrlKey || event.metaKey || event.altKey) return;
+      if (target.closest('input, select, textarea')) return;
       const key = event.key.toLowerCase();
+      if (event.ctrlKey || event.metaKey) {
+        if (key === 'z' && !event.shiftKey) void this.undo();
+        else if (key === 'y' || (key === 'z' && event.shiftKey)) void this.redo();
+        else return;
+        event.preventDefault();
+        return;
+      }
+      if (event.altKey) return;
       const move = moveKeys[key];
       if (move) this.walk(move);
       else if (event.key === 'Backspace') this.back();
-      else if (event.key === 'Escape') this.select(null);
-      else if (event.key === 'Home') this.frameMesh();
+      else if (event.key === 'Escape') {
+        if (!byId('help-overlay').hidden) this.toggleHelp(false);
+        else this.select(null);
+      } else if (event.key === 'Home') this.frameMesh();
       else if (key === 'z') this.frameSelection();
       else if (key === 'o') this.toggleTopView();
       else if (key === 'i') this.toggleIds();
+      else if (key === 's') void this.step();
+      else if (key === 'g') void this.runToEnd();
+      else if (key === 'x') void this.cancel();
+      else if (key === 'q') {
+        this.showTab('quiz');
+        this.quiz.ask();
+      } else if (key === 'm') this.setPresentation(this.scale === 1);
+      else if (event.key === '?') this.toggleHelp();
       else return;
       event.preventDefault();
     });
+  }
+
+  private toggleHelp(show = byId('help-overlay').hidden): void {
+    byId('help-overlay').hidden = !show;
+    if (show) byId('help-close').focus();
   }
 
   private toggleIds(): void {

@@ -77,6 +77,15 @@ export function automation(app: App) {
     undo: () => app.undo().then(summary),
     redo: () => app.redo().then(summary),
     jump: (index: number) => app.jump(index).then(summary),
+    /** The quiz: `ask()` a new question; `question()` the current one, with its answer (for tests). */
+    quiz: {
+      ask: () => app.quiz.ask()?.text ?? null,
+      question: () => {
+        const q = app.quiz.question;
+        return q ? { text: q.text, answer: elementName(q.answer), path: q.path.map(elementName), waiting: app.quiz.active } : null;
+      },
+      score: () => ({ right: app.quiz.right, asked: app.quiz.asked }),
+    },
     /** Stops the editing worker as if it had run out of memory (the page should restart it and restore the mesh). */
     simulateWorkerCrash: () => app.client.simulateCrash(),
     /** Everything the page shows, as plain data. */

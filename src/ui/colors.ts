@@ -18,6 +18,9 @@ export const colors = {
   background: '#f7f7f5',
 } as const;
 
+/** What a phase of an operation did, in the stepper and the view. */
+export const phaseColors = { created: colors.face, moved: colors.selected, rewired: colors.next } as const;
+
 export type PointerRole = 'selected' | 'next' | 'prev' | 'twin' | 'face' | 'origin';
 
 export const legend: Array<{ role: PointerRole; label: string }> = [

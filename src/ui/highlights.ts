@@ -3,10 +3,10 @@
  * `twin`, `face` and `origin` together; for a vertex its outgoing halfedge and one-ring; for a face
  * its loop of halfedges. Pure: it returns a description the highlight layer draws.
  */
-import { faceCentroid, type HalfedgeMesh } from '../core/index.js';
-import { colors } from './colors.js';
+import { faceCentroid, type HalfedgeMesh, type Phase } from '../core/index.js';
+import { colors, phaseColors } from './colors.js';
 import type { Convention } from './records.js';
-import { type Selection } from './selection.js';
+import { elementName, type Selection } from './selection.js';
 import { emptyHighlight, type HighlightSpec } from './scene/highlight.js';
 
 type Point = [number, number, number];
@@ -100,4 +100,54 @@ export function hoverHighlight(mesh: HalfedgeMesh, s: Selection): HighlightSpec 
   if (s.kind === 'face') spec.faces.push({ id: s.id, color });
   if (s.kind === 'edge') spec.edges.push({ id: s.id, color });
   return spec;
+}
+
+/** At most this many of each kind of element are drawn for a phase (a big mesh touches millions). */
+export const MAX_PHASE_MARKS = 5000;
+
+/** What a phase created, moved and rewired, in the stepper's colours (ids no longer there are skipped). */
+export function phaseHighlight(mesh: HalfedgeMesh, phase: Phase): HighlightSpec {
+  const spec = emptyHighlight();
+  const take = (ids: Int32Array | undefined, alive: (id: number) => boolean) => Array.from(ids ?? []).filter(alive).slice(0, MAX_PHASE_MARKS);
+  const vertexAlive = (v: number) => v < mesh.vertexSlots && !mesh.vDeleted[v];
+  const halfedgeAlive = (h: number) => h < mesh.halfedgeSlots && !mesh.eDeleted[h >> 1];
+  const faceAlive = (f: number) => f < mesh.faceSlots && !mesh.fDeleted[f];
+  for (const f of take(phase.created?.faces, faceAlive)) spec.faces.push({ id: f, color: phaseColors.created });
+  for (const h of take(phase.rewired?.halfedges, halfedgeAlive)) spec.halfedges.push({ id: h, color: phaseColors.rewired });
+  for (const h of take(phase.created?.halfedges, halfedgeAlive)) spec.halfedges.push({ id: h, color: phaseColors.created });
+  for (const e of take(phase.created?.edges, (e) => halfedgeAlive(2 * e))) spec.edges.push({ id: e, color: phaseColors.created });
+  for (const v of take(phase.moved?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.moved });
+  for (const v of take(phase.created?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.created });
+  return spec;
+}
+
+/** A quiz path: the start, each step, and the answer (right in green, a wrong pick in vermillion). */
+export function quizHighlight(mesh: HalfedgeMesh, path: Selection[], picked: Selection | null, right: boolean): HighlightSpec {
+  const spec = emptyHighlight();
+  path.forEach((s, i) => {
+    const last = i === path.length - 1;
+    const color = i === 0 ? colors.selected : last && picked ? colors.face : colors.next;
+    if (s.kind === 'halfedge') spec.halfedges.push({ id: s.id, color });
+    if (s.kind === 'vertex') spec.vertices.push({ id: s.id, color });
+    if (s.kind === 'face') spec.faces.push({ id: s.id, color });
+    const at = labelPoint(mesh, s);
+    spec.labels.push({ text: i === 0 ? `start ${elementName(s)}` : elementName(s), at, color });
+  });
+  if (picked && !right) {
+    const color = colors.twin;
+    if (picked.kind === 'halfedge') spec.halfedges.push({ id: picked.id, color });
+    if (picked.kind === 'vertex') spec.vertices.push({ id: picked.id, color });
+    if (picked.kind === 'face') spec.faces.push({ id: picked.id, color });
+    spec.labels.push({ text: `your pick ${elementName(picked)}`, at: labelPoint(mesh, picked), color });
+  }
+  return spec;
+}
+
+function labelPoint(mesh: HalfedgeMesh, s: Selection): Point {
+  if (s.kind === 'halfedge') return arrowMiddle(mesh, s.id);
+  if (s.kind === 'vertex') return mesh.position(s.id) as Point;
+  if (s.kind === 'face') return faceCentroid(mesh, s.id) as Point;
+  const a = mesh.position(mesh.heVertex[2 * s.id]);
+  const b = mesh.position(mesh.heVertex[2 * s.id + 1]);
+  return [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2];
 }

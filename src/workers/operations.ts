@@ -28,7 +28,8 @@ import { type HalfedgeMesh, type Operation, TopologyError } from '../core/index.
 import { cannotSubdivide, type SubdivisionScheme, subdivisionOperation } from '../core/subdivision/index.js';
 
 export type OperationRequest =
-  | { kind: 'subdivide'; scheme: SubdivisionScheme }
+  /** `level`: how many levels of the scheme ran before (√3 splits an open mesh's boundary on odd levels). */
+  | { kind: 'subdivide'; scheme: SubdivisionScheme; level?: number }
   | { kind: 'cut'; plane: [number, number, number, number]; keep?: KeepSide; cap?: boolean };
 
 export type EditRequest =
@@ -48,8 +49,8 @@ const schemeNames: Record<SubdivisionScheme, string> = {
   sqrt3: '√3 subdivision',
 };
 
-/** Phases each operation announces, where the number is fixed. */
-const schemePhases: Record<SubdivisionScheme, number | null> = { loop: 4, 'catmull-clark': 4, butterfly: 3, sqrt3: null };
+/** Phases of one level of each scheme (√3 adds two on the odd levels of an open mesh). */
+const schemePhases: Record<SubdivisionScheme, number> = { loop: 4, 'catmull-clark': 4, butterfly: 3, sqrt3: 3 };
 const CUT_PHASES = 6;
 
 export function operationLabel(request: OperationRequest): string {
@@ -81,8 +82,12 @@ export function startOperation(mesh: HalfedgeMesh, request: OperationRequest): {
   const reason = cannotStart(mesh, request);
   if (reason) throw new TopologyError(reason);
   switch (request.kind) {
-    case 'subdivide':
-      return { operation: subdivisionOperation(mesh, request.scheme), phases: schemePhases[request.scheme] };
+    case 'subdivide': {
+      const level = request.level ?? 0;
+      const splitsBoundary = request.scheme === 'sqrt3' && level % 2 === 1 && hasBoundary(mesh);
+      const phases = schemePhases[request.scheme] + (splitsBoundary ? 2 : 0);
+      return { operation: subdivisionOperation(mesh, request.scheme, { level }), phases };
+    }
     case 'cut':
       return { operation: planeCut(mesh, request.plane, { keep: request.keep, cap: request.cap }), phases: CUT_PHASES };
   }
@@ -137,4 +142,9 @@ export function applyEdit(mesh: HalfedgeMesh, request: EditRequest): EditResult 
     case 'triangulate-mesh':
       return { label: 'triangulate every face', ...triangulateMesh(mesh) };
   }
+}
+
+function hasBoundary(mesh: HalfedgeMesh): boolean {
+  for (let h = 0; h < mesh.halfedgeSlots; h++) if (mesh.heFace[h] === -1 && !mesh.eDeleted[h >> 1]) return true;
+  return false;
 }

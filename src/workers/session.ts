@@ -77,6 +77,11 @@ export class EditingSession {
     const current = this.current();
     this.abandonStepping();
     const working = current.mesh.clone();
+    if (request.kind === 'subdivide' && request.level === undefined) {
+      // how many levels of this scheme led to the current mesh (√3 alternates its boundary rule)
+      const label = operationLabel(request);
+      request = { ...request, level: this.history.slice(0, this.index + 1).filter((entry) => entry.label === label).length };
+    }
     // throws (leaving the session as it was) when the operation does not apply
     const { operation, phases } = startOperation(working, request);
     this.stepping = { label: operationLabel(request), total: phases, working, operation, phases: 0, phase: null, diff: null };

@@ -3,6 +3,7 @@ import {
   buildMesh,
   cube,
   deserializeMesh,
+  disk,
   diffPointers,
   ParseError,
   serializeMesh,
@@ -66,6 +67,19 @@ describe('EditingSession', () => {
     const fromSession = serializeMesh(mesh);
     expect(Array.from(snapshot.mesh.heNext)).toEqual(Array.from(fromSession.heNext));
     expect(Array.from(snapshot.mesh.attributes.vertex[0]!.data)).toEqual(Array.from(fromSession.attributes.vertex[0]!.data));
+  });
+
+  it('counts √3 levels, so the boundary of an open mesh is split on every second one', () => {
+    const session = sessionWith(writeSoup(disk(1), 'off'), 'disk.off');
+    const boundaryEdges = () => session.snapshot().stats.boundaryEdges;
+    expect(boundaryEdges()).toBe(6);
+    for (const [level, phases, boundary] of [[0, 3, 6], [1, 5, 18], [2, 3, 18]] as const) {
+      const started = session.start({ kind: 'subdivide', scheme: 'sqrt3' });
+      expect(started.stepping?.total, `level ${level}`).toBe(phases);
+      for (let i = 0; i < phases; i++) session.step();
+      expect(session.snapshot().stepping).toBeNull();
+      expect(boundaryEdges()).toBe(boundary);
+    }
   });
 
   it('cancels a stepped operation back to the mesh before it', () => {

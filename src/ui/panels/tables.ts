@@ -6,6 +6,7 @@
  */
 import type { HalfedgeMesh } from '../../core/index.js';
 import { el, replace } from '../dom.js';
+import { download } from './export.js';
 import { type Convention, round } from '../records.js';
 import { type ElementKind, elementName, type Selection } from '../selection.js';
 
@@ -90,7 +91,7 @@ export class RecordTables {
     this.tabs = tableSpecs.map((spec) =>
       el('button', { type: 'button', role: 'tab', 'data-table': spec.kind, 'aria-label': `${spec.title} table`, onclick: () => this.show(spec.kind) }, spec.title),
     );
-    const csv = el('button', { type: 'button', 'aria-label': 'Export this table as CSV', onclick: () => this.downloadCsv() }, 'CSV');
+    const csv = el('button', { type: 'button', 'aria-label': 'Export this table as CSV', onclick: () => download(new Blob([this.csv()], { type: 'text/csv' }), `${this.spec.kind}-records.csv`) }, 'CSV');
     this.body.append(this.spacer);
     this.spacer.append(this.rows);
     this.body.addEventListener('scroll', () => this.schedule());
@@ -139,13 +140,6 @@ export class RecordTables {
   /** Element names of the rows in the page now (for tests of the virtual scrolling). */
   renderedRows(): string[] {
     return [...this.rows.children].map((row) => (row as HTMLElement).dataset.element ?? '');
-  }
-
-  private downloadCsv(): void {
-    const url = URL.createObjectURL(new Blob([this.csv()], { type: 'text/csv' }));
-    const link = el('a', { href: url, download: `${this.spec.kind}-records.csv` });
-    link.click();
-    setTimeout(() => URL.revokeObjectURL(url), 1000);
   }
 
   private schedule(): void {

@@ -67,7 +67,8 @@ export class SurfaceLayer {
     this.faces.setIndex(new BufferAttribute(render.triangles, 1));
     this.faces.computeBoundingSphere();
     this.faces.computeBoundingBox();
-    if (render.triangles.length > 0) this.faces.computeBoundsTree();
+    // indirect: the BVH must not reorder the triangles, whose order maps them to their faces
+    if (render.triangles.length > 0) this.faces.computeBoundsTree({ indirect: true });
     this.triangleFace = render.triangleFace;
 
     const ends = new Uint32Array(2 * mesh.edgeSlots);

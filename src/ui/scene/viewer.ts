@@ -121,6 +121,17 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** Puts the camera where a shared link says. */
+  setCamera(position: number[], target: number[], zoom: number): void {
+    const camera = this.camera;
+    camera.position.fromArray(position);
+    camera.zoom = zoom;
+    camera.updateProjectionMatrix();
+    this.controls.target.fromArray(target);
+    this.controls.update();
+    this.requestRender();
+  }
+
   setMode(mode: ViewMode): void {
     this.mode = mode;
     this.controls.object = this.camera;

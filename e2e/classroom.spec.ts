@@ -1,0 +1,113 @@
+import { expect, type Page, test } from '@playwright/test';
+import { cube, writeSoup } from '../src/index.js';
+import { clickCanvas, openApp } from './helpers.js';
+
+/** Finds an element of the given kind whose spot on screen picks it, to click it like a student. */
+async function clickable(page: Page, kind: 'halfedge' | 'vertex' | 'face', avoid: string | null): Promise<{ name: string; x: number; y: number }> {
+  const found = await page.evaluate(
+    ({ kind, avoid }) => {
+      const prefix = { halfedge: 'h', vertex: 'v', face: 'f' }[kind];
+      for (let id = 0; id < 400; id++) {
+        const name = `${prefix}${id}`;
+        if (name === avoid) continue;
+        try {
+          const at = window.halfedgeLab.screenPosition(name);
+          if (at.visible && window.halfedgeLab.pickAt(at.x, at.y, kind) === name) return { name, ...at };
+        } catch {
+          return null;
+        }
+      }
+      return null;
+    },
+    { kind, avoid },
+  );
+  if (!found) throw new Error(`no ${kind} can be clicked`);
+  return found;
+}
+
+test.describe('the classroom', () => {
+  test('a quiz round answered right, then one answered wrong', async ({ page }, testInfo) => {
+    await openApp(page, 'disk.off');
+    await page.keyboard.press('q');
+    await expect(page.locator('.quiz-question')).toContainText('Which');
+    const first = (await page.evaluate(() => window.halfedgeLab.quiz.question()))!;
+    const kind = first.answer[0] === 'h' ? 'halfedge' : first.answer[0] === 'v' ? 'vertex' : 'face';
+    const at = await page.evaluate((name) => window.halfedgeLab.screenPosition(name), first.answer);
+    expect(await page.evaluate(([x, y, k]) => window.halfedgeLab.pickAt(x as number, y as number, k as 'face'), [at.x, at.y, kind])).toBe(first.answer);
+    await clickCanvas(page, at.x, at.y);
+    await expect(page.locator('.quiz-verdict')).toHaveText(`Right: ${first.path[0]} → ${first.text.split(' is ')[1]!.split('.').slice(1).join('.').replace('?', '').split('.').map((move, i) => `${move} → ${first.path[i + 1]}`).join(' → ')}.`);
+    await page.screenshot({ path: testInfo.outputPath('quiz-right.png') });
+
+    await page.getByRole('button', { name: 'New question' }).click();
+    const second = (await page.evaluate(() => window.halfedgeLab.quiz.question()))!;
+    const secondKind = second.answer[0] === 'h' ? 'halfedge' : second.answer[0] === 'v' ? 'vertex' : 'face';
+    const wrong = await clickable(page, secondKind, second.answer);
+    await clickCanvas(page, wrong.x, wrong.y);
+    await expect(page.locator('.quiz-verdict')).toContainText(`Not quite: you picked ${wrong.name}`);
+    await expect(page.locator('.quiz-verdict')).toContainText(`→ ${second.answer}.`);
+    expect(await page.evaluate(() => window.halfedgeLab.quiz.score())).toEqual({ right: 1, asked: 2 });
+    await page.screenshot({ path: testInfo.outputPath('quiz-wrong.png') });
+  });
+
+  test('presentation mode enlarges everything, and ? lists the keys', async ({ page }, testInfo) => {
+    await openApp(page, 'disk.off');
+    await page.evaluate(() => window.halfedgeLab.select('h7'));
+    const before = await page.locator('.record').evaluate((node) => parseFloat(getComputedStyle(node).fontSize));
+    await page.keyboard.press('m');
+    await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', 'true');
+    const after = await page.locator('.record').evaluate((node) => parseFloat(getComputedStyle(node).fontSize));
+    expect(after).toBeGreaterThan(1.3 * before);
+    await page.screenshot({ path: testInfo.outputPath('presentation.png') });
+    await page.keyboard.press('?');
+    await expect(page.getByRole('dialog', { name: 'Keys' })).toBeVisible();
+    await expect(page.getByRole('dialog', { name: 'Keys' })).toContainText('walk to next / prev / twin');
+    await page.screenshot({ path: testInfo.outputPath('help.png') });
+    await page.keyboard.press('Escape');
+    await expect(page.getByRole('dialog', { name: 'Keys' })).toBeHidden();
+  });
+
+  test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
+    await openApp(page, 'torus.off');
+    await page.evaluate(() => window.halfedgeLab.select('h42'));
+    await page.getByRole('button', { name: 'Copy a link to this view' }).click();
+    const link = await page.locator('#status').evaluate((node) => /http\S+/.exec(node.textContent ?? '')![0]);
+    expect(link).toContain('model=torus.off');
+    expect(link).toContain('select=h42');
+    const second = await context.newPage();
+    await second.goto(link);
+    await second.waitForFunction(() => window.halfedgeLab?.state().selection === 'h42');
+    expect(await second.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('torus.off');
+    const here = await page.evaluate(() => window.halfedgeLab.screenPosition('h42'));
+    const there = await second.evaluate(() => window.halfedgeLab.screenPosition('h42'));
+    expect(Math.abs(here.x - there.x) + Math.abs(here.y - there.y)).toBeLessThan(2);
+  });
+
+  test('opens a file dropped anywhere on the page', async ({ page }) => {
+    await openApp(page, 'tetrahedron.off');
+    const text = new TextDecoder().decode(writeSoup(cube(), 'off'));
+    await page.evaluate((content) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([content], 'dropped-cube.off', { type: 'text/plain' }));
+      document.body.dispatchEvent(new DragEvent('dragover', { dataTransfer: transfer, bubbles: true }));
+      document.body.dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true }));
+    }, text);
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('dropped-cube.off');
+    expect(await page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(6);
+  });
+
+  test('works offline once loaded', async ({ page, context }) => {
+    await openApp(page, 'cube.off');
+    await page.evaluate(() => window.halfedgeLab.openSample('torus.off'));
+    // the service worker has taken over and kept what the page loaded
+    await page.waitForFunction(async () => (await caches.keys()).includes('halfedge-lab') && navigator.serviceWorker.controller !== null);
+    await page.waitForFunction(async () => (await (await caches.open('halfedge-lab')).keys()).length > 5);
+    await context.setOffline(true);
+    await page.reload();
+    await page.waitForFunction(() => window.halfedgeLab !== undefined);
+    await page.evaluate(() => window.halfedgeLab.ready);
+    expect(await page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(6);
+    expect(await page.evaluate(() => window.halfedgeLab.openSample('torus.off'))).toBe(true);
+    expect(await page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(128);
+    await context.setOffline(false);
+  });
+});

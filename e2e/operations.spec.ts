@@ -1,0 +1,120 @@
+import { readFileSync } from 'node:fs';
+import { expect, type Page, test } from '@playwright/test';
+import { torus, writeSoup } from '../src/index.js';
+import { openApp } from './helpers.js';
+
+const stats = (page: Page) => page.evaluate(() => window.halfedgeLab.state().stats!);
+const valid = (page: Page) => page.locator('#hud [data-valid]').getAttribute('data-valid');
+
+test.describe('stepping operations, history and export', () => {
+  test('opens a valid file through the file input, then refuses a broken one keeping the first', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    await page.locator('#file-input').setInputFiles({ name: 'torus.obj', mimeType: 'text/plain', buffer: Buffer.from(writeSoup(torus(6, 4), 'obj')) });
+    await expect.poll(async () => (await stats(page)).faces).toBe(24);
+    await page.locator('#file-input').setInputFiles({ name: 'broken.ply', mimeType: 'text/plain', buffer: Buffer.from('ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1\n2\n') });
+    await expect(page.locator('#error-panel')).toBeVisible();
+    await expect(page.locator('#error-message')).toContainText('ply:');
+    expect((await stats(page)).faces).toBe(24);
+    await page.getByRole('button', { name: 'Dismiss the error' }).click();
+    await expect(page.locator('#error-panel')).toBeHidden();
+  });
+
+  test('steps Loop subdivision phase by phase with the invariants holding after each', async ({ page }, testInfo) => {
+    await openApp(page, 'tetrahedron.off');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    await page.locator('[data-operation="loop"]').click();
+    await expect(page.locator('.phase-title')).toContainText('Loop subdivision: ready');
+    // V, E, F after each phase: split edges (hexagons), cut corners, then positions only
+    const expected = [
+      [10, 12, 4],
+      [10, 24, 16],
+      [10, 24, 16],
+      [10, 24, 16],
+    ];
+    for (let phase = 1; phase <= 4; phase++) {
+      await page.getByRole('button', { name: 'Step one phase (S)' }).click();
+      await expect.poll(async () => (await page.evaluate(() => window.halfedgeLab.state().version))).toBeGreaterThan(0);
+      await expect(page.locator('.phase-title')).toContainText(phase < 4 ? `phase ${phase} of 4` : 'done');
+      const { vertices, edges, faces } = await stats(page);
+      expect([vertices, edges, faces]).toEqual(expected[phase - 1]);
+      expect(await valid(page)).toBe('true');
+      await page.screenshot({ path: testInfo.outputPath(`loop-phase-${phase}.png`) });
+    }
+    const history = await page.evaluate(() => window.halfedgeLab.state().history!);
+    expect(history.items.map((i) => i.label)).toEqual(['open tetrahedron.off', 'Loop subdivision']);
+  });
+
+  test('steps a capped plane cut phase by phase into two closed pieces', async ({ page }, testInfo) => {
+    await openApp(page, 'torus.off');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    for (const [coefficient, value] of [['a', '0'], ['b', '1'], ['c', '0'], ['d', '0.05']]) {
+      await page.getByRole('spinbutton', { name: `Plane coefficient ${coefficient}` }).fill(value);
+    }
+    await page.getByRole('button', { name: 'Show plane' }).click();
+    await page.screenshot({ path: testInfo.outputPath('cut-plane.png') });
+    await page.locator('[data-operation="cut"]').click();
+    for (let phase = 1; phase <= 6; phase++) {
+      await page.getByRole('button', { name: 'Step one phase (S)' }).click();
+      await expect(page.locator('.phase-title')).toContainText(phase < 6 ? `phase ${phase} of 6` : 'done');
+      expect(await valid(page)).toBe('true');
+    }
+    await page.screenshot({ path: testInfo.outputPath('cut-done.png') });
+    const after = await stats(page);
+    // a torus cut across its ring: two bent tubes, each closed by two caps
+    expect(after.components).toBe(2);
+    expect(after.closed).toBe(true);
+    expect(after.genus).toBe(0);
+  });
+
+  test('marks an operation that does not apply, with the reason, and undoes back to the start', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    const loop = page.locator('[data-operation="loop"]');
+    await expect(loop).toHaveAttribute('aria-disabled', 'true');
+    await expect(loop).toHaveAttribute('title', /triangles/);
+    await loop.click({ force: true }); // a click on it does nothing
+    expect(await page.evaluate(() => window.halfedgeLab.state().stepping)).toBeNull();
+    // two operations, then undo both
+    await page.locator('[data-operation="catmull-clark"]').click();
+    await page.getByRole('button', { name: 'Run to end (G)' }).click();
+    await expect.poll(async () => (await stats(page)).faces).toBe(24);
+    await page.evaluate(() => window.halfedgeLab.select('f3'));
+    await page.locator('[data-edit="poke-face"]').click();
+    await expect.poll(async () => (await stats(page)).faces).toBe(27);
+    await expect(page.locator('.diff-table')).toBeVisible();
+    await page.keyboard.press('Control+z');
+    await expect.poll(async () => (await stats(page)).faces).toBe(24);
+    await page.getByRole('button', { name: 'Undo (Ctrl+Z)' }).click();
+    await expect.poll(async () => (await stats(page)).faces).toBe(6);
+    await expect(page.getByRole('button', { name: 'Undo (Ctrl+Z) (not available: nothing to undo)' })).toBeVisible();
+    // the timeline jumps forward again
+    await page.getByRole('button', { name: 'Go back to: poke f3' }).click();
+    await expect.poll(async () => (await stats(page)).faces).toBe(27);
+  });
+
+  test('exports the edited mesh and opens the exported file again', async ({ page }) => {
+    await openApp(page, 'tetrahedron.off');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    await page.locator('[data-operation="sqrt3"]').click();
+    await page.getByRole('button', { name: 'Run to end (G)' }).click();
+    await expect.poll(async () => (await stats(page)).faces).toBe(12);
+    const downloading = page.waitForEvent('download');
+    await page.getByRole('button', { name: 'Export the mesh as OFF' }).click();
+    const download = await downloading;
+    expect(download.suggestedFilename()).toBe('tetrahedron-edited.off');
+    const bytes = readFileSync((await download.path())!);
+    await page.locator('#file-input').setInputFiles({ name: 'again.off', mimeType: 'text/plain', buffer: bytes });
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('again.off');
+    const reopened = await stats(page);
+    expect([reopened.vertices, reopened.edges, reopened.faces, reopened.genus]).toEqual([8, 18, 12, 0]);
+    // the tables as JSON, and a picture of the view
+    const tables = page.waitForEvent('download');
+    await page.getByRole('button', { name: 'Export the halfedge tables as JSON' }).click();
+    const json = JSON.parse(readFileSync((await (await tables).path())!, 'utf8'));
+    expect(json.halfedges).toHaveLength(2 * 18);
+    const picture = page.waitForEvent('download');
+    await page.getByRole('button', { name: 'Export a PNG of the view' }).click();
+    const png = readFileSync((await (await picture).path())!);
+    expect(png.subarray(1, 4).toString()).toBe('PNG');
+  });
+});

@@ -1,0 +1,196 @@
+/**
+ * The operations a student can run: subdivision schemes, the plane cut, and the local edits on
+ * the selection. Each button is disabled, with the reason as its tooltip, when it does not apply
+ * (Loop on a quad mesh; a flip on a boundary edge). The reasons come from the core's own
+ * predicates, asked here on the page's copy of the mesh.
+ */
+import type { HalfedgeMesh } from '../../core/index.js';
+import { cannotEdit, cannotStart, type EditRequest, type OperationRequest } from '../../workers/operations.js';
+import { el, replace } from '../dom.js';
+import type { Selection } from '../selection.js';
+
+export interface OperationActions {
+  start(request: OperationRequest): void;
+  edit(request: EditRequest): void;
+  /** Shows or hides the plane gizmo; called with the plane typed in the form. */
+  showPlane(plane: [number, number, number, number] | null): void;
+}
+
+const schemes: Array<{ scheme: 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3'; label: string }> = [
+  { scheme: 'loop', label: 'Loop' },
+  { scheme: 'catmull-clark', label: 'Catmull-Clark' },
+  { scheme: 'butterfly', label: 'Butterfly' },
+  { scheme: 'sqrt3', label: '√3' },
+];
+
+type EditKind = EditRequest['kind'];
+
+const edits: Array<{ kind: EditKind; label: string; needs: 'edge' | 'face' | 'mesh' }> = [
+  { kind: 'flip-edge', label: 'Flip edge', needs: 'edge' },
+  { kind: 'split-edge', label: 'Split edge', needs: 'edge' },
+  { kind: 'collapse-edge', label: 'Collapse edge', needs: 'edge' },
+  { kind: 'erase-edge', label: 'Erase edge', needs: 'edge' },
+  { kind: 'poke-face', label: 'Poke face', needs: 'face' },
+  { kind: 'triangulate-face', label: 'Triangulate face', needs: 'face' },
+  { kind: 'triangulate-mesh', label: 'Triangulate all', needs: 'mesh' },
+];
+
+/** The edge a selection names (an edge, or a halfedge's edge), or -1. */
+function selectedEdge(s: Selection | null): number {
+  return s?.kind === 'edge' ? s.id : s?.kind === 'halfedge' ? s.id >> 1 : -1;
+}
+
+/** The face a selection names (a face, or a halfedge's face), or -1. */
+function selectedFace(mesh: HalfedgeMesh, s: Selection | null): number {
+  return s?.kind === 'face' ? s.id : s?.kind === 'halfedge' ? mesh.heFace[s.id] : -1;
+}
+
+export class OperationsPanel {
+  private readonly schemeButtons: HTMLButtonElement[];
+  private readonly editButtons: HTMLButtonElement[];
+  private readonly plane = [0, 1, 0, 0].map((value, i) =>
+    el('input', { type: 'number', step: 'any', value: String(value), 'aria-label': `Plane coefficient ${'abcd'[i]}`, class: 'plane-input' }),
+  );
+  private readonly keep = el(
+    'select',
+    { 'aria-label': 'Which side to keep' },
+    el('option', { value: 'both' }, 'keep both'),
+    el('option', { value: 'above' }, 'keep above'),
+    el('option', { value: 'below' }, 'keep below'),
+  );
+  private readonly cap = el('input', { type: 'checkbox', checked: true, 'aria-label': 'Cap the cut' });
+  private readonly gizmoButton: HTMLButtonElement;
+  private readonly cutButton: HTMLButtonElement;
+  private readonly splitFrom = el('select', { 'aria-label': 'Split face from vertex' });
+  private readonly splitTo = el('select', { 'aria-label': 'Split face to vertex' });
+  private readonly splitButton: HTMLButtonElement;
+  private mesh: HalfedgeMesh | null = null;
+  private selection: Selection | null = null;
+  private gizmoShown = false;
+
+  constructor(
+    container: HTMLElement,
+    private readonly actions: OperationActions,
+  ) {
+    this.schemeButtons = schemes.map(({ scheme, label }) =>
+      el('button', { type: 'button', 'data-operation': scheme, onclick: whenAvailable(() => actions.start({ kind: 'subdivide', scheme })) }, label),
+    );
+    this.editButtons = edits.map(({ kind, label }) =>
+      el('button', { type: 'button', 'data-edit': kind, onclick: whenAvailable(() => this.runEdit(kind)) }, label),
+    );
+    this.gizmoButton = el('button', { type: 'button', 'aria-pressed': 'false', onclick: () => this.toggleGizmo() }, 'Show plane');
+    this.cutButton = el('button', { type: 'button', 'data-operation': 'cut', onclick: whenAvailable(() => actions.start(this.cutRequest())) }, 'Cut');
+    this.splitButton = el('button', { type: 'button', 'data-edit': 'split-face', onclick: whenAvailable(() => this.runSplitFace()) }, 'Split face');
+    for (const input of this.plane) input.addEventListener('change', () => this.gizmoShown && actions.showPlane(this.planeValues()));
+    for (const select of [this.splitFrom, this.splitTo]) select.addEventListener('change', () => this.updateSplitFace());
+    replace(
+      container,
+      el('h3', {}, 'Subdivide'),
+      el('div', { class: 'button-row' }, ...this.schemeButtons),
+      el('h3', {}, 'Plane cut: a·x + b·y + c·z + d = 0'),
+      el('div', { class: 'plane-row' }, ...this.plane.flatMap((input, i) => [el('span', {}, ['a', 'b', 'c', 'd'][i] + ' '), input])),
+      el('div', { class: 'button-row' }, this.keep, el('label', {}, this.cap, ' cap'), this.gizmoButton, this.cutButton),
+      el('h3', {}, 'Edit the selection'),
+      el('div', { class: 'button-row' }, ...this.editButtons),
+      el('div', { class: 'button-row' }, 'from ', this.splitFrom, ' to ', this.splitTo, this.splitButton),
+    );
+  }
+
+  /** The plane as typed. */
+  planeValues(): [number, number, number, number] {
+    return this.plane.map((input) => Number(input.value)) as [number, number, number, number];
+  }
+
+  /** Fills the form with a plane (the gizmo moved). */
+  setPlane(plane: [number, number, number, number]): void {
+    plane.forEach((value, i) => (this.plane[i].value = String(+value.toPrecision(6))));
+  }
+
+  update(mesh: HalfedgeMesh, selection: Selection | null): void {
+    this.mesh = mesh;
+    this.selection = selection;
+    schemes.forEach(({ scheme, label }, i) => setAvailability(this.schemeButtons[i], `Start ${label} subdivision`, cannotStart(mesh, { kind: 'subdivide', scheme })));
+    setAvailability(this.cutButton, 'Start the plane cut', cannotStart(mesh, this.cutRequest()));
+    edits.forEach(({ kind, label }, i) => setAvailability(this.editButtons[i], label, this.reasonAgainst(kind)));
+    this.updateSplitFace();
+  }
+
+  private cutRequest(): OperationRequest {
+    return { kind: 'cut', plane: this.planeValues(), keep: this.keep.value as 'both' | 'above' | 'below', cap: this.cap.checked };
+  }
+
+  private request(kind: EditKind): EditRequest | string {
+    const mesh = this.mesh!;
+    const need = edits.find((e) => e.kind === kind)?.needs;
+    if (need === 'mesh') return { kind: 'triangulate-mesh' };
+    if (need === 'edge') {
+      const edge = selectedEdge(this.selection);
+      return edge < 0 ? 'select an edge or a halfedge first' : ({ kind, edge } as EditRequest);
+    }
+    const face = selectedFace(mesh, this.selection);
+    return face < 0 ? 'select a face or a halfedge inside one first' : ({ kind, face } as EditRequest);
+  }
+
+  private reasonAgainst(kind: EditKind): string | null {
+    const request = this.request(kind);
+    return typeof request === 'string' ? request : cannotEdit(this.mesh!, request);
+  }
+
+  private runEdit(kind: EditKind): void {
+    const request = this.request(kind);
+    if (typeof request !== 'string') this.actions.edit(request);
+  }
+
+  private updateSplitFace(): void {
+    const mesh = this.mesh!;
+    const face = selectedFace(mesh, this.selection);
+    const corners: number[] = [];
+    if (face >= 0) {
+      let h = mesh.fHalfedge[face];
+      do {
+        corners.push(mesh.heVertex[h]);
+        h = mesh.heNext[h];
+      } while (h !== mesh.fHalfedge[face]);
+    }
+    const keep = [this.splitFrom.value, this.splitTo.value];
+    for (const [i, select] of [this.splitFrom, this.splitTo].entries()) {
+      replace(select, ...corners.map((v) => el('option', { value: String(v) }, `v${v}`)));
+      if (corners.map(String).includes(keep[i])) select.value = keep[i];
+      else if (corners.length > 2) select.value = String(corners[i === 0 ? 0 : 2]);
+    }
+    const reason =
+      face < 0
+        ? 'select a face or a halfedge inside one first'
+        : cannotEdit(mesh, { kind: 'split-face', face, from: Number(this.splitFrom.value), to: Number(this.splitTo.value) });
+    setAvailability(this.splitButton, 'Split the face between the two vertices', reason);
+  }
+
+  private runSplitFace(): void {
+    const face = selectedFace(this.mesh!, this.selection);
+    if (face >= 0) this.actions.edit({ kind: 'split-face', face, from: Number(this.splitFrom.value), to: Number(this.splitTo.value) });
+  }
+
+  private toggleGizmo(): void {
+    this.gizmoShown = !this.gizmoShown;
+    this.gizmoButton.setAttribute('aria-pressed', String(this.gizmoShown));
+    this.actions.showPlane(this.gizmoShown ? this.planeValues() : null);
+  }
+}
+
+/**
+ * Marks a button available, or not with the reason as its tooltip and in its accessible name.
+ * `aria-disabled` rather than `disabled`: a disabled button gets no hover, so no tooltip, and
+ * cannot be focused to hear why.
+ */
+export function setAvailability(button: HTMLButtonElement, label: string, reason: string | null): void {
+  button.setAttribute('aria-disabled', String(reason !== null));
+  button.title = reason ?? label;
+  button.setAttribute('aria-label', reason ? `${label} (not available: ${reason})` : label);
+}
+
+/** A click handler that does nothing on a button marked unavailable. */
+export function whenAvailable(action: () => void): (event: Event) => void {
+  return (event) => {
+    if ((event.currentTarget as HTMLElement).getAttribute('aria-disabled') !== 'true') action();
+  };
+}

@@ -1,0 +1,98 @@
+/**
+ * The stepper: Step (one phase), Run to end, Cancel; the phase's name and explanation; what it
+ * created, moved and rewired (drawn in the view); and the pointer diff — each `next`, `prev`,
+ * `twin`-side, `face` and `origin` field that changed, old → new.
+ */
+import type { PointerChange } from '../../core/index.js';
+import type { Snapshot } from '../../workers/protocol.js';
+import { phaseColors } from '../colors.js';
+import { el, replace } from '../dom.js';
+import type { Selection } from '../selection.js';
+import { setAvailability, whenAvailable } from './operations.js';
+
+export interface StepperActions {
+  step(): void;
+  runToEnd(): void;
+  cancel(): void;
+  select(s: Selection): void;
+}
+
+/** Rows of the pointer diff shown (the count says how many there were). */
+const MAX_DIFF_ROWS = 300;
+
+export class StepperPanel {
+  private readonly title = el('p', { class: 'phase-title', 'aria-live': 'polite' });
+  private readonly explanation = el('p', { class: 'phase-explanation' });
+  private readonly diff = el('div', { class: 'diff' });
+  private readonly stepButton: HTMLButtonElement;
+  private readonly runButton: HTMLButtonElement;
+  private readonly cancelButton: HTMLButtonElement;
+
+  constructor(container: HTMLElement, private readonly actions: StepperActions) {
+    this.stepButton = el('button', { type: 'button', 'aria-keyshortcuts': 'S', onclick: whenAvailable(() => actions.step()) }, 'Step');
+    this.runButton = el('button', { type: 'button', 'aria-keyshortcuts': 'G', onclick: whenAvailable(() => actions.runToEnd()) }, 'Run to end');
+    this.cancelButton = el('button', { type: 'button', 'aria-keyshortcuts': 'X', onclick: whenAvailable(() => actions.cancel()) }, 'Cancel operation');
+    const key = (name: keyof typeof phaseColors) =>
+      el('span', { class: 'legend-row' }, el('span', { class: 'swatch', style: `background:${phaseColors[name]}`, 'aria-hidden': 'true' }), name);
+    replace(
+      container,
+      this.title,
+      this.explanation,
+      el('div', { class: 'button-row' }, this.stepButton, this.runButton, this.cancelButton),
+      el('div', { class: 'phase-legend' }, key('created'), key('moved'), key('rewired')),
+      this.diff,
+    );
+  }
+
+  update(snapshot: Snapshot): void {
+    const { stepping, phase } = snapshot;
+    const idle = stepping === null;
+    const noOperation = 'start an operation first (Operations, above)';
+    setAvailability(this.stepButton, 'Step one phase (S)', idle ? noOperation : null);
+    setAvailability(this.runButton, 'Run to end (G)', idle ? noOperation : null);
+    setAvailability(this.cancelButton, 'Cancel the operation (X)', idle ? noOperation : null);
+    if (stepping) {
+      const of = stepping.total ? ` of ${stepping.total}` : '';
+      this.title.textContent =
+        stepping.phases === 0 ? `${stepping.label}: ready — press Step` : `${stepping.label} — phase ${stepping.phases}${of}: ${phase?.name ?? ''}`;
+    } else {
+      const last = snapshot.history.items[snapshot.history.index];
+      this.title.textContent = phase ? `${last?.label ?? 'done'} — done (last phase: ${phase.name})` : 'No operation running.';
+    }
+    this.explanation.textContent = phase?.explanation ?? '';
+    this.renderDiff(snapshot);
+  }
+
+  private renderDiff(snapshot: Snapshot): void {
+    const diff = snapshot.diff;
+    if (!diff) {
+      replace(this.diff, snapshot.phase ? el('p', { class: 'note' }, 'The pointer diff is left out on a mesh this large.') : '');
+      return;
+    }
+    if (diff.total === 0) {
+      replace(this.diff, el('p', { class: 'note' }, 'No pointer changed in this step (positions only, or nothing).'));
+      return;
+    }
+    const rows = diff.changes.slice(0, MAX_DIFF_ROWS).map((change) => this.row(change));
+    replace(
+      this.diff,
+      el('p', {}, `${diff.total} pointer field${diff.total === 1 ? '' : 's'} changed${diff.total > rows.length ? ` (first ${rows.length} shown)` : ''}:`),
+      el('table', { class: 'diff-table' }, el('thead', {}, el('tr', {}, el('th', {}, 'element'), el('th', {}, 'field'), el('th', {}, 'old'), el('th', {}, 'new'))), el('tbody', {}, ...rows)),
+    );
+  }
+
+  private row(change: PointerChange): HTMLTableRowElement {
+    const owner: Selection = { kind: change.element, id: change.id };
+    const valueKind = change.field === 'origin' ? 'vertex' : change.field === 'face' ? 'face' : 'halfedge';
+    const link = (s: Selection, text: string) => el('button', { type: 'button', class: 'link', onclick: () => this.actions.select(s) }, text);
+    const value = (id: number) => (id < 0 ? '—' : link({ kind: valueKind, id }, `${valueKind[0]}${id}`));
+    return el(
+      'tr',
+      {},
+      el('td', {}, link(owner, `${change.element[0]}${change.id}`)),
+      el('td', {}, change.field),
+      el('td', {}, value(change.before)),
+      el('td', {}, value(change.after)),
+    );
+  }
+}

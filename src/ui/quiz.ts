@@ -1,0 +1,64 @@
+/**
+ * Quiz questions: the app picks a halfedge and a path of pointers, and asks where it leads
+ * ("which halfedge is h17.next.twin?"). The student answers by clicking. Longer paths as the
+ * student gets them right. Pure: a question is made from the mesh and a random source.
+ */
+import type { HalfedgeMesh } from '../core/index.js';
+import { elementName, type Move, type Selection, walk } from './selection.js';
+
+export interface Question {
+  start: Selection;
+  moves: Move[];
+  /** Every element along the path, the start first and the answer last. */
+  path: Selection[];
+  answer: Selection;
+  text: string;
+}
+
+const halfedgeMoves: Move[] = ['next', 'prev', 'twin'];
+const finalMoves: Move[] = ['next', 'prev', 'twin', 'origin', 'face'];
+
+/** Hops for a student who has answered `streak` questions right in a row. */
+export function hopsFor(streak: number): number {
+  return Math.min(1 + Math.floor(streak / 2), 5);
+}
+
+/** A question of `hops` moves from a random halfedge, or null on a mesh without halfedges. */
+export function makeQuestion(mesh: HalfedgeMesh, random: () => number, hops: number): Question | null {
+  if (mesh.nHalfedges === 0) return null;
+  let h = Math.floor(random() * mesh.halfedgeSlots);
+  for (let tries = 0; mesh.eDeleted[h >> 1] && tries < mesh.halfedgeSlots; tries++) h = (h + 1) % mesh.halfedgeSlots;
+  const start: Selection = { kind: 'halfedge', id: h };
+  const path: Selection[] = [start];
+  const moves: Move[] = [];
+  for (let i = 0; i < hops; i++) {
+    const choices = i + 1 < hops ? halfedgeMoves : finalMoves;
+    // a boundary halfedge has no face: draw again until the move leads somewhere
+    for (let tries = 0; tries < 20; tries++) {
+      const move = choices[Math.floor(random() * choices.length)];
+      const to = walk(mesh, path[path.length - 1], move);
+      if (typeof to === 'string') continue;
+      moves.push(move);
+      path.push(to);
+      break;
+    }
+  }
+  const answer = path[path.length - 1];
+  return { start, moves, path, answer, text: `Which ${answer.kind} is ${elementName(start)}.${moves.join('.')}?` };
+}
+
+export function isRight(question: Question, picked: Selection): boolean {
+  return picked.kind === question.answer.kind && picked.id === question.answer.id;
+}
+
+/** A small seeded random source (mulberry32), so a quiz can be replayed in a test. */
+export function seededRandom(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}

@@ -1,0 +1,64 @@
+import { describe, expect, it } from 'vitest';
+import { buildMesh, disk, fan, torus } from '../../src/index.js';
+import { hopsFor, isRight, makeQuestion, seededRandom } from '../../src/ui/quiz.js';
+import { walk } from '../../src/ui/selection.js';
+import { decodeViewState, encodeViewState } from '../../src/ui/share.js';
+
+describe('quiz questions', () => {
+  it('ask where a path of pointers leads, and the answer is that walk', () => {
+    const { mesh } = buildMesh(torus(6, 5));
+    const random = seededRandom(7);
+    for (let i = 0; i < 200; i++) {
+      const question = makeQuestion(mesh, random, 1 + (i % 5))!;
+      expect(question.moves).toHaveLength(1 + (i % 5));
+      let at = question.start;
+      for (const move of question.moves) at = walk(mesh, at, move) as typeof at;
+      expect(at).toEqual(question.answer);
+      expect(question.text).toBe(`Which ${question.answer.kind} is h${question.start.id}.${question.moves.join('.')}?`);
+      expect(isRight(question, question.answer)).toBe(true);
+      expect(isRight(question, { kind: question.answer.kind, id: question.answer.id + 1 })).toBe(false);
+    }
+  });
+
+  it('never asks for the face of a boundary halfedge', () => {
+    const { mesh } = buildMesh(fan(3));
+    const random = seededRandom(3);
+    for (let i = 0; i < 300; i++) {
+      const question = makeQuestion(mesh, random, 3)!;
+      expect(question.path).toHaveLength(4);
+      if (question.answer.kind === 'face') expect(question.answer.id).toBeGreaterThanOrEqual(0);
+    }
+  });
+
+  it('grows harder with the streak of right answers, up to five hops', () => {
+    expect([0, 1, 2, 3, 4, 20].map(hopsFor)).toEqual([1, 1, 2, 2, 3, 5]);
+  });
+
+  it('replays the same questions from the same seed', () => {
+    const { mesh } = buildMesh(disk(2));
+    const a = makeQuestion(mesh, seededRandom(11), 3);
+    const b = makeQuestion(mesh, seededRandom(11), 3);
+    expect(a).toEqual(b);
+  });
+});
+
+describe('share links', () => {
+  it('round-trip the model, selection, camera and mode', () => {
+    const state = {
+      model: 'torus.off',
+      selection: { kind: 'halfedge' as const, id: 17 },
+      camera: { position: [1, 2.5, -3], target: [0, 0, 0.25], zoom: 1.5 },
+      mode: 'top' as const,
+    };
+    expect(decodeViewState(encodeViewState(state))).toEqual(state);
+  });
+
+  it('drop what is malformed instead of trusting it', () => {
+    expect(decodeViewState('model=cube.off&select=x9&camera=1,2,nan&mode=sideways')).toEqual({
+      model: 'cube.off',
+      selection: null,
+      camera: null,
+      mode: null,
+    });
+  });
+});
