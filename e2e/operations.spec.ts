@@ -19,6 +19,21 @@ test.describe('stepping operations, history and export', () => {
     await expect(page.locator('#error-panel')).toBeHidden();
   });
 
+  test('lists what the builder repaired, and each entry shows where', async ({ page }, testInfo) => {
+    await openApp(page, 'non-manifold.obj');
+    await page.getByRole('tab', { name: 'File' }).click();
+    const repairs = page.locator('#file-info [data-repair]');
+    await expect(repairs).toHaveCount(2);
+    await page.locator('[data-repair="non-manifold-vertex"] summary').click();
+    await page.getByRole('button', { name: /^Show: vertex 0 joined 2 fans/ }).click();
+    // the copy of the pinched vertex is selected, and both copies are marked
+    const selection = await page.evaluate(() => window.halfedgeLab.state().selection);
+    expect(selection).toMatch(/^v\d+$/);
+    await expect(page.locator('#status')).toContainText('vertex 0 joined 2 fans');
+    await expect(page.locator('.labels')).toContainText('non-manifold-vertex v0');
+    await page.screenshot({ path: testInfo.outputPath('repairs.png') });
+  });
+
   test('steps Loop subdivision phase by phase with the invariants holding after each', async ({ page }, testInfo) => {
     await openApp(page, 'tetrahedron.off');
     await page.getByRole('tab', { name: 'Operate' }).click();

@@ -4,12 +4,12 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { Box3, Vector3 } from 'three';
-import { deserializeMesh, faceCentroid, faceNormal, type HalfedgeMesh, meshToHalfedgeJSON } from '../core/index.js';
+import { deserializeMesh, faceCentroid, faceNormal, type HalfedgeMesh, meshToHalfedgeJSON, type RepairIncident } from '../core/index.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
 import { byId, el, replace } from './dom.js';
-import { hoverHighlight, phaseHighlight, quizHighlight, selectionHighlight } from './highlights.js';
+import { combineHighlights, hoverHighlight, phaseHighlight, problemHighlight, quizHighlight, selectionHighlight } from './highlights.js';
 import { renderExport } from './panels/export.js';
 import { renderFileInfo } from './panels/file-info.js';
 import { renderHelp } from './panels/help.js';
@@ -75,6 +75,8 @@ export class App {
   readonly quiz: QuizPanel;
   private readonly gizmo: PlaneGizmo;
   private quizSpec: HighlightSpec | null = null;
+  /** A repair from the build report being shown (cleared by the next selection). */
+  private problemSpec: HighlightSpec | null = null;
   private traversalSpec: HighlightSpec | null = null;
   private markReady!: () => void;
 
@@ -108,6 +110,7 @@ export class App {
       start: (request) => void this.start(request),
       edit: (request) => void this.edit(request),
       showPlane: (plane) => this.showPlane(plane),
+      setPlaneMode: (mode) => this.gizmo.setMode(mode),
     });
     this.stepper = new StepperPanel(byId('stepper'), {
       step: () => void this.step(),
@@ -229,6 +232,7 @@ export class App {
     if (this.selection && !exists(mesh, this.selection)) this.selection = null;
     if (this.hovered && !exists(mesh, this.hovered)) this.hovered = null;
     this.path = this.path.filter((step) => exists(mesh, step.to));
+    this.problemSpec = null;
     if (frame) {
       this.selection = null;
       this.path = [];
@@ -290,6 +294,8 @@ export class App {
     this.surface.setEmphasis(this.scale);
     this.refreshArrows();
     this.drawSelection();
+    // the view changed size with the layout: fit the mesh to it once the layout has settled
+    requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
     // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
     if (on && !document.fullscreenElement) document.documentElement.requestFullscreen?.().catch(() => {});
     if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
@@ -360,7 +366,17 @@ export class App {
     }
     this.selection = selection;
     this.path = selection ? [{ move: null, to: selection }] : [];
+    this.problemSpec = null;
     this.afterSelect();
+  }
+
+  /** Selects the first element of a repair and marks all of its elements as problems. */
+  showProblem(incident: RepairIncident, kind: string, first: Selection): void {
+    if (!this.mesh) return;
+    this.select(first);
+    this.problemSpec = problemHighlight(this.mesh, incident, kind);
+    this.say(incident.message);
+    this.drawSelection();
   }
 
   /** Follows a pointer from the selection, extending the breadcrumb. */
@@ -439,7 +455,8 @@ export class App {
   private drawSelection(): void {
     const mesh = this.mesh;
     if (!mesh) return;
-    const spec = this.quizSpec ?? this.traversalSpec ?? (this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight());
+    const selected = this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight();
+    const spec = this.quizSpec ?? this.traversalSpec ?? (this.problemSpec ? combineHighlights(selected, this.problemSpec) : selected);
     this.selectionLayer.show(mesh, spec, this.scale);
     const phase = this.snapshot?.phase;
     if (phase && this.snapshot?.stepping) this.phaseLayer.show(mesh, phaseHighlight(mesh, phase), this.scale);
@@ -456,7 +473,7 @@ export class App {
     if (this.mesh) this.operations.update(this.mesh, this.selection);
     if (snapshot) {
       renderHud(byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
-      renderFileInfo(byId('file-info'), snapshot.file, snapshot.report, (s) => this.select(s));
+      renderFileInfo(byId('file-info'), snapshot.file, snapshot.report, (incident, kind, first) => this.showProblem(incident, kind, first));
     }
   }
 

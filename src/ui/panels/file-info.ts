@@ -3,12 +3,17 @@
  * incident selects the element concerned, so a student sees *where* the mesh is non-manifold.
  * All of it is file text or built from it, and goes in as text only.
  */
-import type { BuildReport } from '../../core/index.js';
+import type { BuildReport, RepairIncident } from '../../core/index.js';
 import type { FileInfo } from '../../workers/protocol.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
 
-export function renderFileInfo(container: HTMLElement, file: FileInfo | null, report: BuildReport | null, select: (s: Selection) => void): void {
+export function renderFileInfo(
+  container: HTMLElement,
+  file: FileInfo | null,
+  report: BuildReport | null,
+  showProblem: (incident: RepairIncident, kind: string, first: Selection) => void,
+): void {
   if (!file) {
     replace(container, el('p', { class: 'note' }, 'No file yet.'));
     return;
@@ -40,7 +45,11 @@ export function renderFileInfo(container: HTMLElement, file: FileInfo | null, re
                   'li',
                   {},
                   target
-                    ? el('button', { type: 'button', class: 'link', 'aria-label': `Select: ${incident.message}`, onclick: () => select(target) }, incident.message)
+                    ? el(
+                        'button',
+                        { type: 'button', class: 'link', 'aria-label': `Show: ${incident.message}`, onclick: () => showProblem(incident, repair.kind, target) },
+                        incident.message,
+                      )
                     : incident.message,
                 );
               }),

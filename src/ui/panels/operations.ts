@@ -14,6 +14,8 @@ export interface OperationActions {
   edit(request: EditRequest): void;
   /** Shows or hides the plane gizmo; called with the plane typed in the form. */
   showPlane(plane: [number, number, number, number] | null): void;
+  /** Whether dragging the gizmo moves or turns the plane. */
+  setPlaneMode(mode: 'translate' | 'rotate'): void;
 }
 
 const schemes: Array<{ scheme: 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3'; label: string }> = [
@@ -60,6 +62,7 @@ export class OperationsPanel {
   );
   private readonly cap = el('input', { type: 'checkbox', checked: true, 'aria-label': 'Cap the cut' });
   private readonly gizmoButton: HTMLButtonElement;
+  private readonly rotateButton: HTMLButtonElement;
   private readonly cutButton: HTMLButtonElement;
   private readonly splitFrom = el('select', { 'aria-label': 'Split face from vertex' });
   private readonly splitTo = el('select', { 'aria-label': 'Split face to vertex' });
@@ -79,6 +82,20 @@ export class OperationsPanel {
       el('button', { type: 'button', 'data-edit': kind, onclick: whenAvailable(() => this.runEdit(kind)) }, label),
     );
     this.gizmoButton = el('button', { type: 'button', 'aria-pressed': 'false', onclick: () => this.toggleGizmo() }, 'Show plane');
+    this.rotateButton = el(
+      'button',
+      {
+        type: 'button',
+        'aria-pressed': 'false',
+        title: 'Drag the gizmo to turn the plane instead of moving it',
+        onclick: () => {
+          const rotate = this.rotateButton.getAttribute('aria-pressed') !== 'true';
+          this.rotateButton.setAttribute('aria-pressed', String(rotate));
+          actions.setPlaneMode(rotate ? 'rotate' : 'translate');
+        },
+      },
+      'Turn plane',
+    );
     this.cutButton = el('button', { type: 'button', 'data-operation': 'cut', onclick: whenAvailable(() => actions.start(this.cutRequest())) }, 'Cut');
     this.splitButton = el('button', { type: 'button', 'data-edit': 'split-face', onclick: whenAvailable(() => this.runSplitFace()) }, 'Split face');
     for (const input of this.plane) input.addEventListener('change', () => this.gizmoShown && actions.showPlane(this.planeValues()));
@@ -89,7 +106,7 @@ export class OperationsPanel {
       el('div', { class: 'button-row' }, ...this.schemeButtons),
       el('h3', {}, 'Plane cut: a·x + b·y + c·z + d = 0'),
       el('div', { class: 'plane-row' }, ...this.plane.flatMap((input, i) => [el('span', {}, ['a', 'b', 'c', 'd'][i] + ' '), input])),
-      el('div', { class: 'button-row' }, this.keep, el('label', {}, this.cap, ' cap'), this.gizmoButton, this.cutButton),
+      el('div', { class: 'button-row' }, this.keep, el('label', {}, this.cap, ' cap'), this.gizmoButton, this.rotateButton, this.cutButton),
       el('h3', {}, 'Edit the selection'),
       el('div', { class: 'button-row' }, ...this.editButtons),
       el('div', { class: 'button-row' }, 'from ', this.splitFrom, ' to ', this.splitTo, this.splitButton),
