@@ -2,14 +2,18 @@
  * The benchmark harness. A case times our code and, where one exists, a JavaScript peer doing the
  * same job on the same input in the same run, so the ratio means something on a shared machine
  * whose absolute speed drifts. Times are the median of several runs after a warm-up.
+ *
+ * Each side of each case runs in a process of its own, so the peak memory reported is that of
+ * the case alone (inputs, result and everything in between), and one case's garbage or compiled
+ * code cannot slow the next.
  */
 
 export interface BenchCase {
   /** Stable name, e.g. `build-sphere`. */
   case: string;
-  /** Faces in the input (the scale the targets are stated in). */
+  /** Faces in the input (the scale the targets are stated in). Known without building anything. */
   size: number;
-  /** Builds the inputs; not timed. */
+  /** Builds the inputs; not timed. Heavy work belongs here, not in the case's factory. */
   prepare?: () => void | Promise<void>;
   /** Our implementation. Its result may be inspected by `bytes`. */
   run: () => unknown;
@@ -20,6 +24,14 @@ export interface BenchCase {
   repeat?: number;
 }
 
+/** What one side of a case measured, in its own process. */
+export interface SideResult {
+  ms: number;
+  /** Largest resident set of the process, in MB. */
+  peakMB: number;
+  bytesPerFace?: number;
+}
+
 export interface BenchResult {
   case: string;
   size: number;
@@ -28,43 +40,45 @@ export interface BenchResult {
   peerMs: number | null;
   /** ms / peerMs: below 1 means faster than the peer. */
   ratio: number | null;
+  peakMB: number;
+  peerPeakMB: number | null;
   bytesPerFace?: number;
-  /** Largest resident set seen while the case ran, in MB. */
-  peakRssMB: number;
 }
 
-export async function runCase(bench: BenchCase): Promise<BenchResult> {
+/** Prepares and times one side of a case (in the current process). */
+export async function measure(bench: BenchCase, side: 'ours' | 'peer'): Promise<SideResult> {
   await bench.prepare?.();
-  const repeat = bench.repeat ?? 5;
-  let peakRss = process.memoryUsage().rss;
-  const time = (fn: () => unknown): { ms: number; result: unknown } => {
-    let result = fn(); // warm-up
-    const times: number[] = [];
-    for (let i = 0; i < repeat; i++) {
-      const start = performance.now();
-      result = fn();
-      times.push(performance.now() - start);
-      peakRss = Math.max(peakRss, process.memoryUsage().rss);
-    }
-    times.sort((a, b) => a - b);
-    return { ms: times[times.length >> 1]!, result };
+  const run = side === 'ours' ? bench.run : bench.peer!.run;
+  let result = run(); // warm-up
+  const times: number[] = [];
+  for (let i = 0; i < (bench.repeat ?? 5); i++) {
+    const start = performance.now();
+    result = run();
+    times.push(performance.now() - start);
+  }
+  times.sort((a, b) => a - b);
+  return {
+    ms: round(times[times.length >> 1]!),
+    peakMB: Math.round(process.resourceUsage().maxRSS / 1024),
+    ...(side === 'ours' && bench.bytes ? { bytesPerFace: round(bench.bytes(result) / bench.size) } : {}),
   };
-  const ours = time(bench.run);
-  const bytesPerFace = bench.bytes ? bench.bytes(ours.result) / bench.size : undefined;
-  const peer = bench.peer ? time(bench.peer.run) : null;
+}
+
+export function combine(bench: BenchCase, ours: SideResult, peer: SideResult | null): BenchResult {
   return {
     case: bench.case,
     size: bench.size,
-    ms: round(ours.ms),
+    ms: ours.ms,
     peer: bench.peer?.name ?? null,
-    peerMs: peer ? round(peer.ms) : null,
+    peerMs: peer?.ms ?? null,
     ratio: peer ? round(ours.ms / peer.ms, 3) : null,
-    ...(bytesPerFace === undefined ? {} : { bytesPerFace: round(bytesPerFace, 1) }),
-    peakRssMB: Math.round(peakRss / 2 ** 20),
+    peakMB: ours.peakMB,
+    peerPeakMB: peer?.peakMB ?? null,
+    ...(ours.bytesPerFace === undefined ? {} : { bytesPerFace: ours.bytesPerFace }),
   };
 }
 
-function round(x: number, digits = 1): number {
+export function round(x: number, digits = 1): number {
   const f = 10 ** digits;
   return Math.round(x * f) / f;
 }

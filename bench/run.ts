@@ -1,10 +1,12 @@
 /**
- * `npm run bench [-- --json] [--only NAME] [--sizes 10000,100000]`
+ * `npm run bench [-- --json] [--only NAME] [--sizes 10000,100000,1000000]`
  *
  * Prints one row per case (or, with --json, one JSON object per line): our time, the peer's time
- * in the same run, and their ratio.
+ * in the same run, their ratio, and the peak memory of each. Every side of every case runs in a
+ * child process of this script (`--child CASE SIZE SIDE`).
  */
-import { type BenchCase, runCase } from './harness.js';
+import { execFileSync } from 'node:child_process';
+import { type BenchCase, type BenchResult, combine, measure, type SideResult } from './harness.js';
 import { buildCases } from './cases/build.js';
 import { cutCases } from './cases/cut.js';
 import { parseCases } from './cases/parse.js';
@@ -13,37 +15,57 @@ import { subdivisionCases } from './cases/subdivision.js';
 const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases, subdivisionCases, cutCases];
 
 const args = process.argv.slice(2);
-const json = args.includes('--json');
-const only = valueOf('--only');
-const sizes = (valueOf('--sizes') ?? '10000,100000,1000000').split(',').map(Number);
-
-function valueOf(flag: string): string | undefined {
+const valueOf = (flag: string) => {
   const i = args.indexOf(flag);
   return i >= 0 ? args[i + 1] : undefined;
+};
+
+const childAt = args.indexOf('--child');
+if (childAt >= 0) {
+  // one side of one case, in this process: print what it measured
+  const [name, size, side] = args.slice(childAt + 1);
+  const bench = caseGroups.flatMap((group) => group([Number(size)])).find((c) => c.case === name)!;
+  console.log(JSON.stringify(await measure(bench, side as 'ours' | 'peer')));
+} else {
+  const json = args.includes('--json');
+  const only = valueOf('--only');
+  const sizes = (valueOf('--sizes') ?? '10000,100000,1000000').split(',').map(Number);
+  if (!json) console.log(header());
+  for (const size of sizes) {
+    for (const bench of caseGroups.flatMap((group) => group([size]))) {
+      if (only && !bench.case.includes(only)) continue;
+      const ours = runSide(bench, size, 'ours');
+      const peer = bench.peer ? runSide(bench, size, 'peer') : null;
+      const result = combine(bench, ours, peer);
+      console.log(json ? JSON.stringify(result) : row(result));
+    }
+  }
 }
 
-const cases = caseGroups.flatMap((group) => group(sizes)).filter((c) => !only || c.case.includes(only));
-if (!json) {
-  console.log('case'.padEnd(28) + 'size'.padStart(10) + 'ms'.padStart(10) + '  peer'.padEnd(24) + 'peer ms'.padStart(10) + 'ratio'.padStart(8) + '  notes');
+/** Runs one side of a case in a child process of this same script. */
+function runSide(bench: BenchCase, size: number, side: 'ours' | 'peer'): SideResult {
+  const output = execFileSync(process.execPath, [...process.execArgv, process.argv[1]!, '--child', bench.case, String(size), side], {
+    encoding: 'utf8',
+    maxBuffer: 1 << 20,
+    stdio: ['ignore', 'pipe', 'inherit'],
+  });
+  return JSON.parse(output.trim().split('\n').at(-1)!) as SideResult;
 }
-for (const bench of cases) {
-  const result = await runCase(bench);
-  if (json) {
-    console.log(JSON.stringify(result));
-  } else {
-    const notes = [
-      result.bytesPerFace !== undefined ? `${result.bytesPerFace} B/face` : '',
-      `peak RSS ${result.peakRssMB} MB`,
-    ].filter(Boolean);
-    console.log(
-      result.case.padEnd(28) +
-        String(result.size).padStart(10) +
-        result.ms.toFixed(1).padStart(10) +
-        ('  ' + (result.peer ?? '-')).padEnd(24) +
-        (result.peerMs?.toFixed(1) ?? '-').padStart(10) +
-        (result.ratio?.toFixed(2) ?? '-').padStart(8) +
-        '  ' +
-        notes.join(', '),
-    );
-  }
+
+function header(): string {
+  return ['case'.padEnd(24), 'faces'.padStart(9), 'ms'.padStart(9), '  peer'.padEnd(22), 'peer ms'.padStart(9), 'ratio'.padStart(7), 'peak MB'.padStart(9), 'peer MB'.padStart(9), '  notes'].join('');
+}
+
+function row(r: BenchResult): string {
+  return [
+    r.case.padEnd(24),
+    String(r.size).padStart(9),
+    r.ms.toFixed(1).padStart(9),
+    ('  ' + (r.peer ?? '-')).padEnd(22),
+    (r.peerMs?.toFixed(1) ?? '-').padStart(9),
+    (r.ratio?.toFixed(3) ?? '-').padStart(7),
+    String(r.peakMB).padStart(9),
+    String(r.peerPeakMB ?? '-').padStart(9),
+    r.bytesPerFace !== undefined ? `  ${r.bytesPerFace} B/face` : '',
+  ].join('');
 }

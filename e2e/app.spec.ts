@@ -25,11 +25,11 @@ test.describe('the teaching app', () => {
       await expect(page.locator('#record')).toContainText(`${name} {`);
     }
     // every halfedge's arrow picks that halfedge
-    const misses = await page.evaluate(() => {
+    const misses = await page.evaluate(async () => {
       const wrong: string[] = [];
       for (let h = 0; h < 84; h++) {
         const at = window.halfedgeLab.screenPosition(`h${h}`);
-        if (window.halfedgeLab.pickAt(at.x, at.y, 'halfedge') !== `h${h}`) wrong.push(`h${h}`);
+        if ((await window.halfedgeLab.pickAt(at.x, at.y, 'halfedge')) !== `h${h}`) wrong.push(`h${h}`);
       }
       return wrong;
     });

@@ -5,14 +5,14 @@ import { clickCanvas, openApp } from './helpers.js';
 /** Finds an element of the given kind whose spot on screen picks it, to click it like a student. */
 async function clickable(page: Page, kind: 'halfedge' | 'vertex' | 'face', avoid: string | null): Promise<{ name: string; x: number; y: number }> {
   const found = await page.evaluate(
-    ({ kind, avoid }) => {
+    async ({ kind, avoid }) => {
       const prefix = { halfedge: 'h', vertex: 'v', face: 'f' }[kind];
       for (let id = 0; id < 400; id++) {
         const name = `${prefix}${id}`;
         if (name === avoid) continue;
         try {
           const at = window.halfedgeLab.screenPosition(name);
-          if (at.visible && window.halfedgeLab.pickAt(at.x, at.y, kind) === name) return { name, ...at };
+          if (at.visible && (await window.halfedgeLab.pickAt(at.x, at.y, kind)) === name) return { name, ...at };
         } catch {
           return null;
         }

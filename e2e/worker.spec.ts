@@ -33,6 +33,12 @@ test.describe('the worker session', () => {
     expect(during.at(-1)!).toBeGreaterThan(during[0]! + 5);
     expect(during[0]!).toBeGreaterThan(framesBefore - 1);
     await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(2 * 800 * 399);
+    // a mesh this large is picked by the picking worker: a click in the middle finds a face
+    const box = (await page.locator('#viewport canvas').boundingBox())!;
+    const picked = await page.evaluate(([x, y]) => window.halfedgeLab.pickAt(x!, y!, 'face'), [box.width / 2, box.height / 2]);
+    expect(picked).toMatch(/^f\d+$/);
+    await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().selection)).toMatch(/^[hvf]\d+$/);
   });
 
   test('shows a parse error with its place, and the previous mesh stays', async ({ page }) => {

@@ -4,10 +4,22 @@ import { HalfedgeDS } from 'three-mesh-halfedge/build/index.esm.js';
 import type { BenchCase } from '../harness.js';
 import { buildMesh, type BuildResult, HalfedgeMesh, type PolygonSoup, torus, uvSphere } from '../../src/index.js';
 
+/** Slices and stacks of a latitude–longitude sphere with about `faces` triangles. */
+function sphereShape(faces: number): { stacks: number; slices: number } {
+  const slices = Math.round(Math.sqrt(faces));
+  return { stacks: Math.round(faces / (2 * slices)) + 1, slices };
+}
+
 /** A closed latitude–longitude sphere with about `faces` triangles. */
 export function sphereWithFaces(faces: number): PolygonSoup {
-  const slices = Math.round(Math.sqrt(faces));
-  return uvSphere(Math.round(faces / (2 * slices)) + 1, slices);
+  const { stacks, slices } = sphereShape(faces);
+  return uvSphere(stacks, slices);
+}
+
+/** The exact number of triangles `sphereWithFaces(faces)` has, without making it. */
+export function sphereFaceCount(faces: number): number {
+  const { stacks, slices } = sphereShape(faces);
+  return 2 * slices * (stacks - 1);
 }
 
 export function meshBytes(mesh: HalfedgeMesh): number {
@@ -18,16 +30,17 @@ export function meshBytes(mesh: HalfedgeMesh): number {
 
 export function buildCases(sizes: number[]): BenchCase[] {
   return sizes.flatMap((size): BenchCase[] => {
-    const sphere = sphereWithFaces(size);
     const side = Math.round(Math.sqrt(size));
-    const quads = torus(side, side);
+    let sphere: PolygonSoup;
+    let quads: PolygonSoup;
     let geometry: BufferGeometry;
     return [
       {
         case: 'build-sphere',
-        size: sphere.faceStarts.length - 1,
+        size: sphereFaceCount(size),
         repeat: size >= 1e6 ? 3 : 7,
         prepare() {
+          sphere = sphereWithFaces(size);
           geometry = new BufferGeometry();
           geometry.setAttribute('position', new BufferAttribute(new Float32Array(sphere.positions), 3));
           geometry.setIndex(new BufferAttribute(sphere.faceIndices, 1));
@@ -38,8 +51,9 @@ export function buildCases(sizes: number[]): BenchCase[] {
       },
       {
         case: 'build-torus-quads',
-        size: quads.faceStarts.length - 1,
+        size: side * side,
         repeat: size >= 1e6 ? 3 : 7,
+        prepare: () => void (quads = torus(side, side)),
         run: () => buildMesh(quads),
         bytes: (result) => meshBytes((result as BuildResult).mesh),
       },

@@ -7,13 +7,12 @@ import { buildMesh } from '../../src/core/build.js';
 import { cutMesh, type KeepSide } from '../../src/core/cut/index.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
 import type { BenchCase } from '../harness.js';
-import { sphereWithFaces } from './build.js';
+import { sphereFaceCount, sphereWithFaces } from './build.js';
 
 const PLANE = [0.1, 0.2, 1, -0.05] as const;
 
 export function cutCases(sizes: number[]): BenchCase[] {
   return sizes.flatMap((size) => {
-    const soup = sphereWithFaces(size);
     let sphere: HalfedgeMesh;
     const cutCopy = (keep: KeepSide) => () => {
       const mesh = sphere.clone();
@@ -21,10 +20,10 @@ export function cutCases(sizes: number[]): BenchCase[] {
       return mesh;
     };
     const common = {
-      size: soup.faceStarts.length - 1,
+      size: sphereFaceCount(size),
       repeat: size >= 1e6 ? 5 : 9,
       prepare() {
-        sphere = buildMesh(soup).mesh;
+        sphere = buildMesh(sphereWithFaces(size)).mesh;
       },
     };
     return [

@@ -9,7 +9,7 @@ import { PLYLoader } from 'three/examples/jsm/loaders/PLYLoader.js';
 import type { BenchCase } from '../harness.js';
 import type { PolygonSoup } from '../../src/index.js';
 import { readMesh, type WriteFormat, writeSoup } from '../../src/core/io/index.js';
-import { sphereWithFaces } from './build.js';
+import { sphereFaceCount, sphereWithFaces } from './build.js';
 
 type Positions = PolygonSoup['positions'];
 
@@ -26,8 +26,7 @@ function sixDecimals(positions: Positions): Float64Array {
 
 export function parseCases(sizes: number[]): BenchCase[] {
   return sizes.flatMap((size) => {
-    const sphere = sphereWithFaces(size);
-    const faces = sphere.faceStarts.length - 1;
+    const faces = sphereFaceCount(size);
     return formats.map(({ name, format, positions }): BenchCase => {
       let bytes: Uint8Array = new Uint8Array(0);
       let buffer = new ArrayBuffer(0);
@@ -36,6 +35,7 @@ export function parseCases(sizes: number[]): BenchCase[] {
         size: faces,
         repeat: size >= 1e6 ? 5 : 9,
         prepare() {
+          const sphere = sphereWithFaces(size);
           bytes = writeSoup({ ...sphere, positions: positions(sphere.positions) }, format);
           buffer = bytes.slice().buffer;
         },

@@ -17,14 +17,13 @@ import { LoopSubdivision } from 'three-subdivide';
 import type { BenchCase } from '../harness.js';
 import { buildMesh, type HalfedgeMesh, torus } from '../../src/index.js';
 import { subdivide, type SubdivisionScheme } from '../../src/core/subdivision/index.js';
-import { sphereWithFaces } from './build.js';
+import { sphereFaceCount, sphereWithFaces } from './build.js';
 
 const peerFaceLimit = 200_000;
 
 export function subdivisionCases(sizes: number[]): BenchCase[] {
   return sizes.flatMap((size): BenchCase[] => {
     const repeat = size >= 1e6 ? 3 : 5;
-    const sphere = sphereWithFaces(size);
     const side = Math.round(Math.sqrt(size));
     const geometry = new BufferGeometry();
     const loop = copiesFor('loop', repeat);
@@ -32,9 +31,10 @@ export function subdivisionCases(sizes: number[]): BenchCase[] {
     return [
       {
         case: 'loop',
-        size: sphere.faceStarts.length - 1,
+        size: sphereFaceCount(size),
         repeat,
         prepare() {
+          const sphere = sphereWithFaces(size);
           loop.prepare(buildMesh(sphere).mesh);
           geometry.setAttribute('position', new BufferAttribute(new Float32Array(sphere.positions), 3));
           geometry.setIndex(new BufferAttribute(sphere.faceIndices, 1));

@@ -4,7 +4,7 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { Box3, Vector3 } from 'three';
-import { deserializeMesh, faceCentroid, faceNormal, type HalfedgeMesh, meshToHalfedgeJSON, type RepairIncident } from '../core/index.js';
+import { deserializeMesh, faceCentroid, type HalfedgeMesh, meshToHalfedgeJSON, type RepairIncident } from '../core/index.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
@@ -60,6 +60,8 @@ export class App {
   samples: SampleModel[] = [];
   /** Resolves when the first mesh is on screen. */
   readonly ready: Promise<void>;
+  /** The snapshot version last shown, and when it arrived (performance.now()). */
+  shown = { version: 0, at: 0 };
 
   private readonly surface = new SurfaceLayer();
   private readonly arrows = new ArrowLayer();
@@ -226,9 +228,10 @@ export class App {
 
   /** Draws a snapshot; `frame` points the camera at it (a newly opened mesh). */
   show(snapshot: Snapshot, frame: boolean): void {
+    this.shown = { version: snapshot.version, at: performance.now() };
     this.snapshot = snapshot;
     const mesh = (this.mesh = deserializeMesh(snapshot.mesh));
-    this.surface.update(mesh, snapshot.render);
+    this.surface.update(snapshot.render);
     if (this.selection && !exists(mesh, this.selection)) this.selection = null;
     if (this.hovered && !exists(mesh, this.hovered)) this.hovered = null;
     this.path = this.path.filter((step) => exists(mesh, step.to));
@@ -237,12 +240,12 @@ export class App {
       this.selection = null;
       this.path = [];
       this.traversal.stop();
-      const planeNormal = planarNormal(mesh);
-      this.viewer.setMode(planeNormal ? 'top' : 'perspective');
-      byId('top-view').setAttribute('aria-pressed', String(Boolean(planeNormal)));
+      const planar = snapshot.render.planeNormal !== null;
+      this.viewer.setMode(planar ? 'top' : 'perspective');
+      byId('top-view').setAttribute('aria-pressed', String(planar));
       this.frameMesh();
     }
-    this.refreshArrows();
+    void this.refreshArrows();
     this.tables.setMesh(mesh, this.convention);
     this.stepper.update(snapshot);
     this.history.update(snapshot);
@@ -261,7 +264,7 @@ export class App {
     const centre = box.getCenter(new Vector3());
     let radius = 0;
     for (const v of mesh.vertices()) radius = Math.max(radius, centre.distanceTo(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2])));
-    this.viewer.frame(box, planarNormal(mesh) ?? new Vector3(0, 0, 1), radius);
+    this.viewer.frame(box, this.viewNormal(), radius);
   }
 
   frameSelection(): void {
@@ -276,7 +279,13 @@ export class App {
       box.expandByPoint(new Vector3(...mesh.position(mesh.heVertex[mesh.heNext[id]])));
     }
     box.expandByScalar(box.getSize(new Vector3()).length() * 0.6 + 1e-9);
-    this.viewer.frame(box, planarNormal(mesh) ?? new Vector3(0, 0, 1));
+    this.viewer.frame(box, this.viewNormal());
+  }
+
+  /** The direction the top view looks along: the plane of a 2D mesh, else z. */
+  private viewNormal(): Vector3 {
+    const normal = this.snapshot?.render.planeNormal;
+    return normal ? new Vector3(...normal) : new Vector3(0, 0, 1);
   }
 
   toggleTopView(): void {
@@ -292,7 +301,7 @@ export class App {
     document.documentElement.classList.toggle('presentation', on);
     byId('presentation').setAttribute('aria-pressed', String(on));
     this.surface.setEmphasis(this.scale);
-    this.refreshArrows();
+    void this.refreshArrows();
     this.drawSelection();
     // the view changed size with the layout: fit the mesh to it once the layout has settled
     requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
@@ -420,16 +429,16 @@ export class App {
   }
 
   /** A click on the canvas: answers the quiz when it is waiting, selects otherwise. */
-  click(x: number, y: number): void {
+  async click(x: number, y: number): Promise<void> {
     const question = this.quiz.active ? this.quiz.question : null;
-    const picked = this.pickAt(x, y, question ? question.answer.kind : this.filter);
+    const picked = await this.pickAt(x, y, question ? question.answer.kind : this.filter);
     if (question) {
       if (picked) this.quiz.answer(picked);
     } else this.select(picked);
   }
 
   /** The element under a point of the canvas (CSS pixels), with the current filter. */
-  pickAt(x: number, y: number, filter: PickFilter = this.filter): Selection | null {
+  async pickAt(x: number, y: number, filter: PickFilter = this.filter): Promise<Selection | null> {
     if (!this.mesh) return null;
     return pick({ viewer: this.viewer, surface: this.surface, mesh: this.mesh, shown: this.arrows.shown, scale: this.scale }, x, y, filter);
   }
@@ -470,7 +479,7 @@ export class App {
     const snapshot = this.snapshot;
     renderInspector(byId('record'), byId('convention-note'), this.mesh, this.selection, this.convention, (s) => this.select(s));
     renderBreadcrumb(byId('breadcrumb'), this.path);
-    if (this.mesh) this.operations.update(this.mesh, this.selection);
+    if (this.mesh && snapshot) this.operations.update(this.mesh, this.selection, snapshot.cannotSubdivide);
     if (snapshot) {
       renderHud(byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
       renderFileInfo(byId('file-info'), snapshot.file, snapshot.report, (incident, kind, first) => this.showProblem(incident, kind, first));
@@ -478,7 +487,7 @@ export class App {
   }
 
   /** All arrows on a mesh of modest size; on a big one, those near the selection or the view. */
-  private refreshArrows(): void {
+  private async refreshArrows(): Promise<void> {
     const mesh = this.mesh;
     if (!mesh) return;
     const note = byId('arrow-note');
@@ -486,7 +495,8 @@ export class App {
       this.arrows.update(mesh, null, this.scale);
       note.hidden = true;
     } else {
-      const focus = this.focusFace();
+      const focus = await this.focusFace();
+      if (mesh !== this.mesh) return; // a newer snapshot arrived meanwhile
       this.arrows.update(mesh, focus < 0 ? new Int32Array(0) : halfedgesNear(mesh, focus), this.scale);
       note.hidden = false;
       note.textContent = `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${this.selection ? 'selection' : 'centre of the view'}.`;
@@ -495,11 +505,11 @@ export class App {
   }
 
   private refreshArrowsIfPartial(): void {
-    if (this.mesh && this.mesh.nHalfedges > MAX_ARROWS) this.refreshArrows();
+    if (this.mesh && this.mesh.nHalfedges > MAX_ARROWS) void this.refreshArrows();
   }
 
   /** The face to grow the drawn arrows from: the selection's, or the one in the middle of the view. */
-  private focusFace(): number {
+  private async focusFace(): Promise<number> {
     const mesh = this.mesh!;
     const s = this.selection;
     if (s?.kind === 'face') return s.id;
@@ -510,7 +520,7 @@ export class App {
       return mesh.heFace[h] >= 0 ? mesh.heFace[h] : mesh.heFace[mesh.hePrev[h] ^ 1];
     }
     const { width, height } = this.viewer.size();
-    const hit = this.surface.raycast(this.viewer.ray(width / 2, height / 2));
+    const hit = await this.surface.raycast(this.viewer.ray(width / 2, height / 2));
     if (hit) return hit.face;
     for (const f of mesh.faces()) return f;
     return -1;
@@ -570,16 +580,17 @@ export class App {
     let down: { x: number; y: number } | null = null;
     canvas.addEventListener('pointerdown', (event) => (down = { x: event.offsetX, y: event.offsetY }));
     canvas.addEventListener('pointerup', (event) => {
-      if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) this.click(event.offsetX, event.offsetY);
+      if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) void this.click(event.offsetX, event.offsetY);
       down = null;
     });
     let hoverPending = false;
     canvas.addEventListener('pointermove', (event) => {
-      if (hoverPending || event.buttons !== 0) return;
+      // no hover preview until picking is quick (a big mesh's hierarchy is still being built)
+      if (hoverPending || event.buttons !== 0 || !this.surface.quickToPick) return;
       hoverPending = true;
-      requestAnimationFrame(() => {
+      requestAnimationFrame(async () => {
+        this.hover(await this.pickAt(event.offsetX, event.offsetY));
         hoverPending = false;
-        this.hover(this.pickAt(event.offsetX, event.offsetY));
       });
     });
     canvas.addEventListener('pointerleave', () => this.hover(null));
@@ -632,22 +643,6 @@ export class App {
     }
     this.drawSelection();
   }
-}
-
-/** The plane's normal when every face lies in one plane (a 2D mesh), else null. */
-export function planarNormal(mesh: HalfedgeMesh): Vector3 | null {
-  let reference: Vector3 | null = null;
-  const n = [0, 0, 0];
-  for (const f of mesh.faces()) {
-    faceNormal(mesh, f, n);
-    if (n[0] === 0 && n[1] === 0 && n[2] === 0) continue;
-    const normal = new Vector3(n[0], n[1], n[2]);
-    if (!reference) reference = normal;
-    else if (Math.abs(reference.dot(normal)) < 0.9999) return null;
-  }
-  if (!reference) return null;
-  // look at the side the faces face
-  return reference;
 }
 
 function idLabels(mesh: HalfedgeMesh): HighlightSpec {

@@ -62,9 +62,9 @@ export function automation(app: App) {
       const { x, y, visible } = app.viewer.project(point);
       return { x, y, visible };
     },
-    /** What a click at canvas point (x, y) would pick. */
-    pickAt: (x: number, y: number, filter?: 'auto' | ElementKind) => {
-      const s = app.pickAt(x, y, filter);
+    /** What a click at canvas point (x, y) would pick (a promise: a large mesh is picked in a worker). */
+    pickAt: async (x: number, y: number, filter?: 'auto' | ElementKind) => {
+      const s = await app.pickAt(x, y, filter);
       return s ? elementName(s) : null;
     },
     setConvention: (convention: 'origin' | 'target') => app.setConvention(convention),
@@ -103,6 +103,9 @@ export function automation(app: App) {
       history: app.snapshot?.history ?? null,
       version: app.snapshot?.version ?? 0,
       frames: app.viewer.frames,
+      /** When the last snapshot arrived and when the view was last drawn (performance.now()). */
+      shownAt: app.shown.at,
+      drawnAt: app.viewer.lastDrawAt,
     }),
   };
 }

@@ -22,6 +22,7 @@ import {
   type SerializedMesh,
   type Violation,
 } from '../core/index.js';
+import type { SubdivisionScheme } from '../core/subdivision/index.js';
 import type { EditRequest, OperationRequest } from './operations.js';
 
 export type { EditRequest, OperationRequest };
@@ -43,12 +44,20 @@ export interface LoadedFile {
   file: FileInfo;
 }
 
-/** Triangles to draw (polygons split), each remembering its face for picking. */
+/** What the page draws, ready to upload: so the page's thread only hands buffers to the GPU. */
 export interface RenderBuffers {
-  /** Vertex ids, three per triangle. */
+  /** x, y, z of every vertex slot, as float32. */
+  positions: Float32Array;
+  /** Vertex ids, three per triangle (polygons split). */
   triangles: Uint32Array;
-  /** The face each triangle belongs to. */
+  /** The face each triangle belongs to, for picking. */
   triangleFace: Int32Array;
+  /** Vertex ids, two per live edge. */
+  edges: Uint32Array;
+  /** The live vertices (to draw as dots). */
+  vertices: Uint32Array;
+  /** The normal of the plane every face lies in, for a 2D mesh; null for a 3D one. */
+  planeNormal: [number, number, number] | null;
 }
 
 export interface HistoryItem {
@@ -83,6 +92,8 @@ export interface Snapshot {
   diff: PointerDiff | null;
   stepping: SteppingState | null;
   history: { items: HistoryItem[]; index: number };
+  /** Why each subdivision scheme does not apply to this mesh (null: it does). */
+  cannotSubdivide: Record<SubdivisionScheme, string | null>;
 }
 
 export interface ProgressEvent {
@@ -119,7 +130,10 @@ export interface LoaderApi {
 /** Every buffer of a snapshot or loaded file, for the transfer list. */
 export function transferables(value: Snapshot | LoadedFile): ArrayBuffer[] {
   const buffers = meshBuffers(value.mesh);
-  if ('render' in value) buffers.push(value.render.triangles.buffer as ArrayBuffer, value.render.triangleFace.buffer as ArrayBuffer);
+  if ('render' in value) {
+    const { positions, triangles, triangleFace, edges, vertices } = value.render;
+    buffers.push(...[positions, triangles, triangleFace, edges, vertices].map((a) => a.buffer as ArrayBuffer));
+  }
   return buffers;
 }
 

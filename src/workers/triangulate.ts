@@ -7,7 +7,7 @@
 import { faceVectorArea, type HalfedgeMesh, planeBasis, triangulatePolygon } from '../core/index.js';
 import type { RenderBuffers } from './protocol.js';
 
-export function triangulateFaces(mesh: HalfedgeMesh): RenderBuffers {
+export function triangulateFaces(mesh: HalfedgeMesh): Pick<RenderBuffers, 'triangles' | 'triangleFace'> {
   const { heNext, heVertex, fHalfedge, fDeleted, positions: p } = mesh;
   let count = 0;
   for (let f = 0; f < mesh.faceSlots; f++) if (!fDeleted[f]) count += mesh.faceDegree(f) - 2;

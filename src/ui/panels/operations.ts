@@ -5,6 +5,7 @@
  * predicates, asked here on the page's copy of the mesh.
  */
 import type { HalfedgeMesh } from '../../core/index.js';
+import type { SubdivisionScheme } from '../../core/subdivision/index.js';
 import { cannotEdit, cannotStart, type EditRequest, type OperationRequest } from '../../workers/operations.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
@@ -123,10 +124,11 @@ export class OperationsPanel {
     plane.forEach((value, i) => (this.plane[i].value = String(+value.toPrecision(6))));
   }
 
-  update(mesh: HalfedgeMesh, selection: Selection | null): void {
+  /** `cannotSubdivide` comes with the snapshot (checking every face is the worker's job). */
+  update(mesh: HalfedgeMesh, selection: Selection | null, cannotSubdivide: Record<SubdivisionScheme, string | null>): void {
     this.mesh = mesh;
     this.selection = selection;
-    schemes.forEach(({ scheme, label }, i) => setAvailability(this.schemeButtons[i], `Start ${label} subdivision`, cannotStart(mesh, { kind: 'subdivide', scheme })));
+    schemes.forEach(({ scheme, label }, i) => setAvailability(this.schemeButtons[i], `Start ${label} subdivision`, cannotSubdivide[scheme]));
     setAvailability(this.cutButton, 'Start the plane cut', cannotStart(mesh, this.cutRequest()));
     edits.forEach(({ kind, label }, i) => setAvailability(this.editButtons[i], label, this.reasonAgainst(kind)));
     this.updateSplitFace();

@@ -26,9 +26,9 @@ export interface PickContext {
 const VERTEX_RADIUS = 12;
 const ARROW_RADIUS = 14;
 
-export function pick(context: PickContext, x: number, y: number, filter: PickFilter): Selection | null {
+export async function pick(context: PickContext, x: number, y: number, filter: PickFilter): Promise<Selection | null> {
   const { viewer, surface, mesh, scale } = context;
-  const hit = surface.raycast(viewer.ray(x, y));
+  const hit = await surface.raycast(viewer.ray(x, y));
   const placement = newPlacement();
   const screenDistanceToArrow = (h: number) => {
     placeArrow(mesh, h, placement, scale);

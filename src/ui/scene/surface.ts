@@ -1,34 +1,38 @@
 /**
  * The surface itself: flat-shaded faces (the back side in a darker shade, so a student sees which
  * way a face is oriented), every edge as a line, and vertices as dots while the mesh is small.
- * Picking casts rays against the triangles through a bounding-volume hierarchy (three-mesh-bvh).
+ * Picking casts rays against the triangles: here for a modest mesh, in a worker holding a
+ * bounding-volume hierarchy (three-mesh-bvh) for a large one.
  */
 import {
   BackSide,
   BufferAttribute,
   BufferGeometry,
+  DoubleSide,
   FrontSide,
   Group,
   LineBasicMaterial,
   LineSegments,
   Mesh,
+  MeshBasicMaterial,
   MeshStandardMaterial,
   Points,
   PointsMaterial,
   type Raycaster,
   Vector3,
 } from 'three';
-import { acceleratedRaycast, computeBoundsTree, disposeBoundsTree } from 'three-mesh-bvh';
-import type { HalfedgeMesh } from '../../core/index.js';
+import { type Remote, transfer, wrap } from 'comlink';
 import type { RenderBuffers } from '../../workers/protocol.js';
 import { colors } from '../colors.js';
-
-BufferGeometry.prototype.computeBoundsTree = computeBoundsTree;
-BufferGeometry.prototype.disposeBoundsTree = disposeBoundsTree;
-Mesh.prototype.raycast = acceleratedRaycast;
+import type { PickingApi } from './picking.worker.js';
 
 /** Draw vertices as dots up to this many. */
 const MAX_DOTS = 1_000;
+/**
+ * Up to this many triangles a ray is tested against each of them, here (a few milliseconds);
+ * beyond, a worker with a bounding-volume hierarchy answers (built while the mesh is on screen).
+ */
+const PICK_HERE = 150_000;
 
 export interface SurfaceHit {
   face: number;
@@ -44,7 +48,12 @@ export class SurfaceLayer {
   private readonly back: Mesh;
   private readonly edges: LineSegments;
   private readonly dots: Points;
+  /** Tests rays against both sides of every face; not drawn. */
+  private readonly pickTarget = new Mesh(this.faces, new MeshBasicMaterial({ side: DoubleSide }));
   private triangleFace: Int32Array = new Int32Array(0);
+  private pickingWorker: Remote<PickingApi> | null = null;
+  /** Resolves when the picking worker holds the current mesh; null while picking happens here. */
+  private workerReady: Promise<void> | null = null;
 
   constructor() {
     // the surface sits a little behind the arrows and lines drawn in its plane
@@ -53,54 +62,57 @@ export class SurfaceLayer {
     this.back = new Mesh(this.faces, new MeshStandardMaterial({ color: colors.surfaceBack, flatShading: true, side: BackSide, ...offset }));
     this.edges = new LineSegments(this.lines, new LineBasicMaterial({ color: colors.edge }));
     this.dots = new Points(this.vertices, new PointsMaterial({ color: colors.edge, size: 4, sizeAttenuation: false }));
-    this.back.raycast = () => {}; // one hit per face is enough: the front mesh answers
-    this.edges.raycast = () => {};
-    this.dots.raycast = () => {};
+    // what is drawn is not what is picked: rays go to the pick target
+    for (const drawn of [this.front, this.back, this.edges, this.dots]) drawn.raycast = () => {};
     this.group.add(this.front, this.back, this.edges, this.dots);
   }
 
-  update(mesh: HalfedgeMesh, render: RenderBuffers): void {
-    const positions = new Float32Array(mesh.positions.subarray(0, 3 * mesh.vertexSlots));
-    const position = new BufferAttribute(positions, 3);
-    this.faces.disposeBoundsTree();
+  update(render: RenderBuffers): void {
+    const position = new BufferAttribute(render.positions, 3);
     this.faces.setAttribute('position', position);
     this.faces.setIndex(new BufferAttribute(render.triangles, 1));
     this.faces.computeBoundingSphere();
     this.faces.computeBoundingBox();
-    // indirect: the BVH must not reorder the triangles, whose order maps them to their faces
-    if (render.triangles.length > 0) this.faces.computeBoundsTree({ indirect: true });
     this.triangleFace = render.triangleFace;
+    const triangles = render.triangles.length / 3;
+    this.workerReady = triangles > PICK_HERE ? this.sendToPickingWorker(render) : null;
 
-    const ends = new Uint32Array(2 * mesh.edgeSlots);
-    let n = 0;
-    for (let e = 0; e < mesh.edgeSlots; e++) {
-      if (mesh.eDeleted[e]) continue;
-      ends[n++] = mesh.heVertex[2 * e];
-      ends[n++] = mesh.heVertex[2 * e + 1];
-    }
     this.lines.setAttribute('position', position);
-    this.lines.setIndex(new BufferAttribute(ends.subarray(0, n), 1));
+    this.lines.setIndex(new BufferAttribute(render.edges, 1));
     this.lines.computeBoundingSphere();
-    const live = new Uint32Array(mesh.nVertices);
-    n = 0;
-    for (let v = 0; v < mesh.vertexSlots; v++) if (!mesh.vDeleted[v]) live[n++] = v;
     this.vertices.setAttribute('position', position);
-    this.vertices.setIndex(new BufferAttribute(live, 1));
+    this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
     this.vertices.computeBoundingSphere();
     // a point set (no faces) shows its vertices however many there are
-    this.dots.visible = mesh.nVertices <= MAX_DOTS || mesh.nFaces === 0;
+    this.dots.visible = render.vertices.length <= MAX_DOTS || triangles === 0;
+  }
+
+  /** Whether picking is quick enough to follow the pointer (hover previews). */
+  get quickToPick(): boolean {
+    return this.workerReady === null;
   }
 
   /** The face under the ray, and where the ray meets it. */
-  raycast(raycaster: Raycaster): SurfaceHit | null {
-    raycaster.firstHitOnly = true;
-    const hit = raycaster.intersectObject(this.front, false)[0];
-    if (!hit || hit.faceIndex === undefined || hit.faceIndex === null) return null;
-    return { face: this.triangleFace[hit.faceIndex], point: hit.point };
+  async raycast(raycaster: Raycaster): Promise<SurfaceHit | null> {
+    const triangleFace = this.triangleFace;
+    if (!this.workerReady) {
+      const hit = raycaster.intersectObject(this.pickTarget, false)[0];
+      return hit?.faceIndex === undefined || hit.faceIndex === null ? null : { face: triangleFace[hit.faceIndex], point: hit.point };
+    }
+    await this.workerReady;
+    const hit = await this.pickingWorker!.raycast(raycaster.ray.origin.toArray(), raycaster.ray.direction.toArray());
+    return hit ? { face: triangleFace[hit.triangle], point: new Vector3().fromArray(hit.point) } : null;
   }
 
   /** Line width and dot size, larger for a lecture hall. */
   setEmphasis(scale: number): void {
     (this.dots.material as PointsMaterial).size = 4 * scale;
+  }
+
+  private sendToPickingWorker(render: RenderBuffers): Promise<void> {
+    this.pickingWorker ??= wrap<PickingApi>(new Worker(new URL('./picking.worker.ts', import.meta.url), { type: 'module' }));
+    const positions = render.positions.slice();
+    const triangles = render.triangles.slice();
+    return this.pickingWorker.setMesh(transfer(positions, [positions.buffer]), transfer(triangles, [triangles.buffer]));
   }
 }

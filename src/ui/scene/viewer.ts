@@ -31,8 +31,10 @@ export class Viewer {
   readonly orthographic = new OrthographicCamera(-1, 1, 1, -1, 0.01, 1000);
   readonly controls: OrbitControls;
   mode: ViewMode = 'perspective';
-  /** Frames drawn so far (tests watch it move while the worker works). */
+  /** Animation frames so far (tests watch it move while the worker works). */
   frames = 0;
+  /** When the scene was last drawn (performance.now()). */
+  lastDrawAt = 0;
   private needsRender = true;
   private readonly light = new DirectionalLight(0xffffff, 1.6);
 
@@ -181,6 +183,7 @@ export class Viewer {
   }
 
   private draw(): void {
+    this.lastDrawAt = performance.now();
     // the light follows the camera, so the side facing the student is always lit
     this.light.position.copy(this.camera.position);
     this.renderer.render(this.scene, this.camera);

@@ -1,0 +1,131 @@
+/**
+ * `npm run bench:browser [-- --json]`: the app in headless Chromium, on the production build.
+ *
+ *   - first load: from navigation to the sample mesh drawn;
+ *   - open a 1M-triangle binary PLY: from choosing the file to the first frame that shows it;
+ *   - one Loop step on 250k triangles: from the click to the first frame that shows the result;
+ *   - for both, the longest main-thread task while the worker works, and overall;
+ *   - the size of the app's JavaScript, gzipped.
+ *
+ * Prints one JSON object per line with --json (`case`, `size`, `ms`, plus the case's own fields).
+ */
+import { execFileSync, spawn } from 'node:child_process';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { gzipSync } from 'node:zlib';
+import { chromium } from '@playwright/test';
+import { writeSoup } from '../src/index.js';
+import { sphereWithFaces } from './cases/build.js';
+
+const json = process.argv.includes('--json');
+const root = join(import.meta.dirname, '..');
+const port = 5199;
+const results: Array<Record<string, unknown>> = [];
+const report = (result: Record<string, unknown>) => {
+  results.push(result);
+  console.log(json ? JSON.stringify(result) : `${String(result.case).padEnd(28)} ${JSON.stringify(result)}`);
+};
+
+execFileSync(join(root, 'node_modules/.bin/vite'), ['build', '--logLevel', 'error'], { cwd: root, stdio: 'inherit' });
+const server = spawn(join(root, 'node_modules/.bin/vite'), ['preview', '--port', String(port), '--strictPort'], { cwd: root, stdio: 'ignore' });
+const folder = mkdtempSync(join(tmpdir(), 'halfedge-bench-'));
+const executablePath = ['/usr/bin/chromium', '/usr/bin/chromium-browser'].find((p) => existsSync(p));
+const browser = await chromium.launch({
+  executablePath,
+  args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking'],
+});
+
+try {
+  await waitForServer(`http://localhost:${port}/`);
+
+  // the bundle
+  const assets = join(root, 'site/assets');
+  const scripts = readdirSync(assets).filter((name) => name.endsWith('.js'));
+  const gzipped = scripts.reduce((sum, name) => sum + gzipSync(readFileSync(join(assets, name)), { level: 9 }).length, 0);
+  report({ case: 'bundle-js-gzip', size: scripts.length, ms: null, kB: Math.round(gzipped / 1024), limitKB: 300 });
+
+  // first load
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  await page.goto(`http://localhost:${port}/`);
+  await page.waitForFunction(() => window.halfedgeLab !== undefined);
+  await page.evaluate(() => window.halfedgeLab.ready);
+  const firstLoad = await page.evaluate(() => window.halfedgeLab.state().drawnAt);
+  report({ case: 'first-load-to-sample-drawn', size: 0, ms: Math.round(firstLoad), limitMs: 1500 });
+
+  await page.evaluate(() => {
+    const w = window as unknown as { longTasks: Array<{ start: number; duration: number }> };
+    w.longTasks = [];
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) w.longTasks.push({ start: entry.startTime, duration: entry.duration });
+    }).observe({ type: 'longtask', buffered: false });
+  });
+
+  // opening a 1M-triangle binary PLY
+  const big = join(folder, 'sphere-1m.ply');
+  writeFileSync(big, writeSoup(sphereWithFaces(1_000_000), 'ply-binary'));
+  await measure(page, 'open-1m-binary-ply', 1_000_000, async () => {
+    await page.locator('#file-input').setInputFiles(big);
+  });
+
+  // one Loop step on 250k triangles
+  const medium = join(folder, 'sphere-250k.ply');
+  writeFileSync(medium, writeSoup(sphereWithFaces(250_000), 'ply-binary'));
+  await page.locator('#file-input').setInputFiles(medium);
+  await page.waitForFunction(() => window.halfedgeLab.state().file?.name === 'sphere-250k.ply' && window.halfedgeLab.state().drawnAt > window.halfedgeLab.state().shownAt);
+  await page.evaluate(() => window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' }));
+  await measure(page, 'loop-step-250k-to-drawn', 250_000, async () => {
+    await page.evaluate(() => void window.halfedgeLab.runToEnd());
+  });
+} finally {
+  await browser.close();
+  server.kill();
+  rmSync(folder, { recursive: true, force: true });
+}
+
+/**
+ * Times `act` from its start to the first frame drawn after the next snapshot arrives, and the
+ * longest main-thread tasks before that snapshot arrived (the worker working) and after.
+ */
+async function measure(page: import('@playwright/test').Page, name: string, size: number, act: () => Promise<void>) {
+  const before = await page.evaluate(() => {
+    (window as unknown as { longTasks: unknown[] }).longTasks = [];
+    return { version: window.halfedgeLab.state().version, t: performance.now() };
+  });
+  await act();
+  await page.waitForFunction(
+    (version) => {
+      const s = window.halfedgeLab.state();
+      return s.version > version && s.drawnAt > s.shownAt;
+    },
+    before.version,
+    { timeout: 300_000 },
+  );
+  const after = await page.evaluate(() => {
+    const s = window.halfedgeLab.state();
+    return { shownAt: s.shownAt, drawnAt: s.drawnAt, tasks: (window as unknown as { longTasks: Array<{ start: number; duration: number }> }).longTasks };
+  });
+  // the task that handles the arriving snapshot ends after it is shown: it is the drawing's, not the wait's
+  const during = after.tasks.filter((t) => t.start + t.duration < after.shownAt);
+  const longest = (tasks: Array<{ duration: number }>) => Math.round(Math.max(0, ...tasks.map((t) => t.duration)));
+  report({
+    case: name,
+    size,
+    ms: Math.round(after.drawnAt - before.t),
+    longestTaskWhileWorkerWorksMs: longest(during),
+    longestTaskOverallMs: longest(after.tasks),
+    limitLongestTaskMs: 100,
+  });
+}
+
+async function waitForServer(url: string): Promise<void> {
+  for (let i = 0; i < 100; i++) {
+    try {
+      if ((await fetch(url)).ok) return;
+    } catch {
+      // not up yet
+    }
+    await new Promise((resolve) => setTimeout(resolve, 100));
+  }
+  throw new Error(`the preview server did not start at ${url}`);
+}
