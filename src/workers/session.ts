@@ -3,8 +3,8 @@
  * stepped. Pure logic with no worker API in sight, so it is tested directly; `session.worker.ts`
  * exposes it to the page.
  *
- * Every change works on a copy: the mesh in the history is never edited, so undo is a move of the
- * index, cancel drops the copy, and a failing operation leaves the session as it was.
+ * Every change works on a copy: the meshes in the history are never edited, so undo is a move in
+ * the history, cancel drops the copy, and a failing operation leaves the session as it was.
  */
 import {
   type BuildReport,
@@ -19,12 +19,12 @@ import {
 } from '../core/index.js';
 import { writeMesh, type WriteFormat } from '../core/io/index.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
+import { History } from './history.js';
 import type { FileInfo, LoadedFile, ProgressListener, Snapshot } from './protocol.js';
 import { makeSnapshot } from './snapshot.js';
 
-interface HistoryEntry {
-  label: string;
-  mesh: HalfedgeMesh;
+/** What the session remembers with each mesh of the history, to show it again. */
+interface EntryInfo {
   report: BuildReport | null;
   file: FileInfo | null;
   phase: Phase | null;
@@ -47,8 +47,7 @@ interface Stepping {
 const DIFF_HALFEDGE_LIMIT = 600_000;
 
 export class EditingSession {
-  private history: HistoryEntry[] = [];
-  private index = -1;
+  private readonly history = new History<EntryInfo>();
   private stepping: Stepping | null = null;
   private cancelRequested = false;
   private version = 0;
@@ -62,25 +61,26 @@ export class EditingSession {
   adopt(loaded: LoadedFile): Snapshot {
     const mesh = deserializeMesh(loaded.mesh);
     this.abandonStepping();
-    this.push({ label: `open ${loaded.file.name}`, mesh, report: loaded.report, file: loaded.file, phase: null, diff: null });
+    this.history.push(`open ${loaded.file.name}`, mesh, { report: loaded.report, file: loaded.file, phase: null, diff: null });
     return this.snapshot();
   }
 
   restore(serialized: SerializedMesh, label: string): Snapshot {
     this.abandonStepping();
-    this.push({ label, mesh: deserializeMesh(serialized), report: null, file: null, phase: null, diff: null });
+    this.history.push(label, deserializeMesh(serialized), { report: null, file: null, phase: null, diff: null });
     return this.snapshot();
   }
 
   /** Starts stepping an operation on a copy of the current mesh; nothing changes until `step`. */
   start(request: OperationRequest): Snapshot {
-    const current = this.current();
+    const current = this.currentMesh();
     this.abandonStepping();
-    const working = current.mesh.clone();
+    const working = current.clone();
     if (request.kind === 'subdivide' && request.level === undefined) {
       // how many levels of this scheme led to the current mesh (√3 alternates its boundary rule)
       const label = operationLabel(request);
-      request = { ...request, level: this.history.slice(0, this.index + 1).filter((entry) => entry.label === label).length };
+      const levels = this.history.items().slice(0, this.history.position + 1).filter((entry) => entry.label === label).length;
+      request = { ...request, level: levels };
     }
     // throws (leaving the session as it was) when the operation does not apply
     const { operation, phases } = startOperation(working, request);
@@ -119,15 +119,13 @@ export class EditingSession {
   }
 
   edit(request: EditRequest): Snapshot {
-    const current = this.current();
+    const current = this.currentMesh();
     this.abandonStepping();
-    const mesh = current.mesh.clone();
+    const mesh = current.clone();
     const result = applyEdit(mesh, request); // throws, leaving the session as it was
-    this.push({
-      label: result.label,
-      mesh,
+    this.history.push(result.label, mesh, {
       report: null,
-      file: current.file,
+      file: this.history.entry()!.info.file,
       phase: null,
       diff: { changes: result.changes, total: result.changes.length },
     });
@@ -136,43 +134,48 @@ export class EditingSession {
 
   undo(): Snapshot {
     this.abandonStepping();
-    if (this.index > 0) this.index--;
+    if (this.history.position > 0) this.history.moveTo(this.history.position - 1);
     return this.snapshot();
   }
 
   redo(): Snapshot {
     this.abandonStepping();
-    if (this.index + 1 < this.history.length) this.index++;
+    if (this.history.position + 1 < this.history.length) this.history.moveTo(this.history.position + 1);
     return this.snapshot();
   }
 
   jump(index: number): Snapshot {
-    if (!Number.isInteger(index) || index < 0 || index >= this.history.length) {
-      throw new RangeError(`history has entries 0..${this.history.length - 1}, not ${index}`);
-    }
     this.abandonStepping();
-    this.index = index;
+    this.history.moveTo(index);
     return this.snapshot();
   }
 
   exportMesh(format: string): Uint8Array {
-    const mesh = this.stepping?.working ?? this.current().mesh;
-    return writeMesh(mesh, format as WriteFormat);
+    return writeMesh(this.stepping?.working ?? this.currentMesh(), format as WriteFormat);
+  }
+
+  /** Bytes the history keeps (see `History`): a test of its thrift. */
+  historyBytes(): number {
+    return this.history.bytes();
   }
 
   snapshot(): Snapshot {
-    const entry = this.history[this.index];
+    const entry = this.history.entry();
     const stepping = this.stepping;
-    const mesh = stepping?.working ?? entry?.mesh;
+    const mesh = stepping?.working ?? this.history.mesh();
     if (!mesh || !entry) throw new TopologyError('no mesh is open yet');
+    const { info } = entry;
     return makeSnapshot(mesh, {
       version: ++this.version,
-      report: stepping ? null : entry.report,
-      file: entry.file,
-      phase: stepping ? stepping.phase : entry.phase,
-      diff: stepping ? stepping.diff : entry.diff,
+      report: stepping ? null : info.report,
+      file: info.file,
+      phase: stepping ? stepping.phase : info.phase,
+      diff: stepping ? stepping.diff : info.diff,
       stepping: stepping ? { label: stepping.label, phases: stepping.phases, total: stepping.total } : null,
-      history: { items: this.history.map(historyItem), index: this.index },
+      history: {
+        items: this.history.items().map(({ label, vertices, faces }) => ({ label, vertices, faces })),
+        index: this.history.position,
+      },
     });
   }
 
@@ -199,11 +202,9 @@ export class EditingSession {
     }
     // the operation is over: its result joins the history
     this.stepping = null;
-    this.push({
-      label: stepping.label,
-      mesh: stepping.working,
+    this.history.push(stepping.label, stepping.working, {
       report: null,
-      file: this.current().file,
+      file: this.history.entry()!.info.file,
       phase: stepping.phase,
       diff: stepping.diff,
     });
@@ -213,19 +214,9 @@ export class EditingSession {
     this.stepping = null;
   }
 
-  private current(): HistoryEntry {
-    const entry = this.history[this.index];
-    if (!entry) throw new TopologyError('no mesh is open yet');
-    return entry;
+  private currentMesh(): HalfedgeMesh {
+    const mesh = this.history.mesh();
+    if (!mesh) throw new TopologyError('no mesh is open yet');
+    return mesh;
   }
-
-  private push(entry: HistoryEntry): void {
-    this.history.length = this.index + 1;
-    this.history.push(entry);
-    this.index = this.history.length - 1;
-  }
-}
-
-function historyItem(entry: HistoryEntry) {
-  return { label: entry.label, vertices: entry.mesh.nVertices, faces: entry.mesh.nFaces };
 }
