@@ -25,7 +25,7 @@
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { startLevel } from './preconditions.js';
-import { blendedAttributes, boundaryVertexRule, neighbourSums, storeValues } from './stencil.js';
+import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
 import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
 
 /**
@@ -121,29 +121,6 @@ function moveToEdgePoints(mesh: HalfedgeMesh, x: Float64Array | Float32Array, E:
  * (ΣQ_i + ΣF_i)/n² + (n − 2)/n · P: both sums are gathered in one pass over the edges.
  */
 function catmullClarkVertexPoints(mesh: HalfedgeMesh, x: ArrayLike<number>, firstFacePoint: number): Float64Array {
-  const { heFace, vHalfedge } = mesh;
-  const { sums: out, valence } = neighbourSums(mesh, x, firstFacePoint, firstFacePoint);
-  for (let v = 0; v < firstFacePoint; v++) {
-    const o = 3 * v;
-    const start = vHalfedge[v];
-    // isolated vertex?
-    if (start === -1) {
-      out[o] = x[o];
-      out[o + 1] = x[o + 1];
-      out[o + 2] = x[o + 2];
-    }
-    // boundary vertex?
-    else if (heFace[start] === -1) {
-      boundaryVertexRule(mesh, x, v, out);
-    }
-    // interior vertex
-    else {
-      const ring = 1 / (valence[v] * valence[v]);
-      const self = (valence[v] - 2) / valence[v];
-      out[o] = ring * out[o] + self * x[o];
-      out[o + 1] = ring * out[o + 1] + self * x[o + 1];
-      out[o + 2] = ring * out[o + 2] + self * x[o + 2];
-    }
-  }
-  return out;
+  const sums = neighbourSums(mesh, x, firstFacePoint, firstFacePoint);
+  return moveOldVertices(mesh, x, firstFacePoint, sums, (n) => ({ self: (n - 2) / n, ring: 1 / (n * n) }));
 }

@@ -23,7 +23,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { cutCorners, range, splitEdges } from './topology.js';
 import { requireApplicable, startLevel } from './preconditions.js';
-import { blendedAttributes, boundaryVertexRule, neighbourSums, storeValues } from './stencil.js';
+import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
 
 /**
  * One level of Loop subdivision, as a steppable operation that edits `mesh` in place.
@@ -119,44 +119,21 @@ function loopEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64Array 
   return out;
 }
 
-/** The even stencil: the new place of each old vertex, three numbers per vertex. */
+/**
+ * The even stencil: the new place of each old vertex, three numbers per vertex. An interior vertex
+ * with n neighbours keeps 1 − nβ of itself and takes β of each neighbour.
+ */
 function loopVertexPoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64Array {
-  const { heFace, vHalfedge } = mesh;
   // sum the old neighbours of every vertex, edge by edge
-  const { sums: out, valence } = neighbourSums(mesh, x, mesh.vertexSlots);
-  for (let v = 0; v < mesh.vertexSlots; v++) {
-    const o = 3 * v;
-    const start = vHalfedge[v];
-    // isolated vertex?
-    if (start === -1) {
-      out[o] = x[o];
-      out[o + 1] = x[o + 1];
-      out[o + 2] = x[o + 2];
-    }
-    // boundary vertex?
-    else if (heFace[start] === -1) {
-      boundaryVertexRule(mesh, x, v, out);
-    }
-    // interior vertex: (1 − nβ) of itself, β of each neighbour
-    else {
-      const beta = loopBeta(valence[v]);
-      const self = 1 - valence[v] * beta;
-      out[o] = self * x[o] + beta * out[o];
-      out[o + 1] = self * x[o + 1] + beta * out[o + 1];
-      out[o + 2] = self * x[o + 2] + beta * out[o + 2];
-    }
-  }
-  return out;
+  const sums = neighbourSums(mesh, x, mesh.vertexSlots);
+  return moveOldVertices(mesh, x, mesh.vertexSlots, sums, (n) => {
+    const beta = loopBeta(n);
+    return { self: 1 - n * beta, ring: beta };
+  });
 }
 
-const betas: number[] = [];
-
-/** Loop's weight of each neighbour of a vertex with `n` neighbours. */
+/** Loop's weight of each neighbour of a vertex with `n` neighbours: (1/n)(5/8 − (3/8 + ¼·cos(2π/n))²). */
 function loopBeta(n: number): number {
-  let beta = betas[n];
-  if (beta === undefined) {
-    const w = 3 / 8 + Math.cos((2 * Math.PI) / n) / 4;
-    beta = betas[n] = (5 / 8 - w * w) / n;
-  }
-  return beta;
+  const w = 3 / 8 + Math.cos((2 * Math.PI) / n) / 4;
+  return (5 / 8 - w * w) / n;
 }

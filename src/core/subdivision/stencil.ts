@@ -114,3 +114,47 @@ export function boundaryVertexRule(mesh: HalfedgeMesh, x: ArrayLike<number>, v: 
   out[o + 1] = (3 / 4) * x[o + 1] + (x[next + 1] + x[prev + 1]) / 8;
   out[o + 2] = (3 / 4) * x[o + 2] + (x[next + 2] + x[prev + 2]) / 8;
 }
+
+/**
+ * The even rule shared by Loop and Catmull-Clark, for old vertices `0 … count − 1` given the
+ * `sums` and `valence` of `neighbourSums`: an isolated vertex stays put, a boundary vertex follows
+ * `boundaryVertexRule`, and an interior vertex with n neighbours moves to
+ * `self(n) · itself + ring(n) · sum`. Writes over `sums`, and returns it.
+ */
+export function moveOldVertices(
+  mesh: HalfedgeMesh,
+  x: ArrayLike<number>,
+  count: number,
+  { sums: out, valence }: { sums: Float64Array; valence: Int32Array },
+  weights: (n: number) => { self: number; ring: number },
+): Float64Array {
+  const { heFace, vHalfedge } = mesh;
+  // the weights depend on the valence only: work them out once per valence
+  const selfOf: number[] = [];
+  const ringOf: number[] = [];
+  for (let v = 0; v < count; v++) {
+    const o = 3 * v;
+    const start = vHalfedge[v];
+    // isolated vertex?
+    if (start === -1) {
+      out[o] = x[o];
+      out[o + 1] = x[o + 1];
+      out[o + 2] = x[o + 2];
+    }
+    // boundary vertex?
+    else if (heFace[start] === -1) {
+      boundaryVertexRule(mesh, x, v, out);
+    }
+    // interior vertex
+    else {
+      const n = valence[v];
+      if (selfOf[n] === undefined) ({ self: selfOf[n], ring: ringOf[n] } = weights(n));
+      const self = selfOf[n];
+      const ring = ringOf[n];
+      out[o] = self * x[o] + ring * out[o];
+      out[o + 1] = self * x[o + 1] + ring * out[o + 1];
+      out[o + 2] = self * x[o + 2] + ring * out[o + 2];
+    }
+  }
+  return out;
+}
