@@ -9,6 +9,7 @@ export * from './diff.js';
 export * from './errors.js';
 export * from './geometry.js';
 export * from './mesh.js';
+export * from './random.js';
 export * from './operation.js';
 export * from './report.js';
 export * from './serialize.js';

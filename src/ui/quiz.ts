@@ -50,15 +50,3 @@ export function makeQuestion(mesh: HalfedgeMesh, random: () => number, hops: num
 export function isRight(question: Question, picked: Selection): boolean {
   return picked.kind === question.answer.kind && picked.id === question.answer.id;
 }
-
-/** A small seeded random source (mulberry32), so a quiz can be replayed in a test. */
-export function seededRandom(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}

@@ -6,7 +6,7 @@
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { buildMesh, cube, ParseError, tetrahedron } from '../../src/index.js';
+import { buildMesh, cube, ParseError, seededRandom, tetrahedron } from '../../src/index.js';
 import { meshToSoup, readMesh, writeSoup } from '../../src/core/io/index.js';
 import { writePly } from '../../src/core/io/write-ply.js';
 import { text } from './helpers.js';
@@ -14,18 +14,6 @@ import { text } from './helpers.js';
 const SEED = 20261121;
 /** Mutations per sample file: about 3 s in all. */
 const ROUNDS = 1000;
-
-/** mulberry32: a tiny seeded generator, so every run mutates the same way. */
-function random(seed: number): () => number {
-  let state = seed >>> 0;
-  return () => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let t = state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 interface Sample {
   name: string;
@@ -150,7 +138,7 @@ describe(`fuzzed files (seed ${SEED})`, () => {
   });
 
   it('with bytes flipped, pieces moved and headers edited: never another exception', () => {
-    const rand = random(SEED);
+    const rand = seededRandom(SEED);
     const outcomes = { read: 0, refused: 0 };
     const started = performance.now();
     for (let round = 0; round < ROUNDS; round++) {

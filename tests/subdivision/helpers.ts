@@ -111,14 +111,3 @@ export function at(mesh: HalfedgeMesh, v: number): number[] {
   return Array.from(mesh.positions.subarray(3 * v, 3 * v + 3));
 }
 
-/** A small deterministic generator (mulberry32), for inputs that do not need shrinking. */
-export function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, disk, fan, torus } from '../../src/index.js';
-import { hopsFor, isRight, makeQuestion, seededRandom } from '../../src/ui/quiz.js';
+import { buildMesh, disk, fan, seededRandom, torus } from '../../src/index.js';
+import { hopsFor, isRight, makeQuestion } from '../../src/ui/quiz.js';
 import { walk } from '../../src/ui/selection.js';
 import { decodeViewState, encodeViewState } from '../../src/ui/share.js';
 
