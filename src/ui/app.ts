@@ -30,7 +30,8 @@ import { pick, type PickFilter } from './scene/picking.js';
 import { PlaneGizmo } from './scene/plane-gizmo.js';
 import { SurfaceLayer } from './scene/surface.js';
 import { Viewer } from './scene/viewer.js';
-import { elementName, exists, moveKeys, type Move, type Selection, walk, type WalkStep } from './selection.js';
+import { handleKey } from './keys.js';
+import { elementName, exists, type Move, type Selection, walk, type WalkStep } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, type ViewState } from './share.js';
 
@@ -596,46 +597,21 @@ export class App {
     canvas.addEventListener('pointerleave', () => this.hover(null));
 
     window.addEventListener('keydown', (event) => {
-      const target = event.target as HTMLElement;
-      if (target.closest('input, select, textarea')) return;
-      const key = event.key.toLowerCase();
-      if (event.ctrlKey || event.metaKey) {
-        if (key === 'z' && !event.shiftKey) void this.undo();
-        else if (key === 'y' || (key === 'z' && event.shiftKey)) void this.redo();
-        else return;
-        event.preventDefault();
-        return;
-      }
-      if (event.altKey) return;
-      const move = moveKeys[key];
-      if (move) this.walk(move);
-      else if (event.key === 'Backspace') this.back();
-      else if (event.key === 'Escape') {
-        if (!byId('help-overlay').hidden) this.toggleHelp(false);
-        else this.select(null);
-      } else if (event.key === 'Home') this.frameMesh();
-      else if (key === 'z') this.frameSelection();
-      else if (key === 'o') this.toggleTopView();
-      else if (key === 'i') this.toggleIds();
-      else if (key === 's') void this.step();
-      else if (key === 'g') void this.runToEnd();
-      else if (key === 'x') void this.cancel();
-      else if (key === 'q') {
-        this.showTab('quiz');
-        this.quiz.ask();
-      } else if (key === 'm') this.setPresentation(this.scale === 1);
-      else if (event.key === '?') this.toggleHelp();
-      else return;
-      event.preventDefault();
+      if ((event.target as HTMLElement).closest('input, select, textarea')) return;
+      if (handleKey(this, event)) event.preventDefault();
     });
   }
 
-  private toggleHelp(show = byId('help-overlay').hidden): void {
+  get helpShown(): boolean {
+    return !byId('help-overlay').hidden;
+  }
+
+  toggleHelp(show = !this.helpShown): void {
     byId('help-overlay').hidden = !show;
     if (show) byId('help-close').focus();
   }
 
-  private toggleIds(): void {
+  toggleIds(): void {
     this.showIds = !this.showIds;
     byId('show-ids').setAttribute('aria-pressed', String(this.showIds));
     if (this.showIds && this.mesh && this.mesh.nVertices + this.mesh.nFaces > MAX_ID_LABELS) {
