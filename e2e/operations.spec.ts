@@ -19,6 +19,19 @@ test.describe('stepping operations, history and export', () => {
     await expect(page.locator('#error-panel')).toBeHidden();
   });
 
+  test('shows text from a file as text, never as markup', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    const hostile = '<img src=x onerror="window.injected=1"><b>bold</b>';
+    const ply = `ply\nformat ascii 1.0\ncomment ${hostile}\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n`;
+    await page.locator('#file-input').setInputFiles({ name: `${hostile}.ply`, mimeType: 'text/plain', buffer: Buffer.from(ply) });
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(1);
+    await page.getByRole('tab', { name: 'File' }).click();
+    await page.locator('#file-info summary', { hasText: 'Comments in the file' }).click();
+    await expect(page.locator('#file-info')).toContainText(hostile);
+    expect(await page.locator('#file-info img, #file-info b, #status img').count()).toBe(0);
+    expect(await page.evaluate(() => (window as unknown as { injected?: number }).injected)).toBeUndefined();
+  });
+
   test('lists what the builder repaired, and each entry shows where', async ({ page }, testInfo) => {
     await openApp(page, 'non-manifold.obj');
     await page.getByRole('tab', { name: 'File' }).click();
