@@ -11,6 +11,18 @@ import { bipyramid, checkedEdit, counts, degrees, edgeBetween, meshOf, triangleQ
 
 const SEED = 777;
 
+/** Relabels edge e's halfedges: 2e becomes 2e + 1 and the other way round (a renumbering only). */
+function swapHalfedges(mesh: HalfedgeMesh, e: number): void {
+  const [x, y] = [2 * e, 2 * e + 1];
+  const swap = (h: number) => (h === x ? y : h === y ? x : h);
+  for (const array of [mesh.heNext, mesh.hePrev]) {
+    for (let h = 0; h < mesh.halfedgeSlots; h++) array[h] = swap(array[h]);
+  }
+  for (const array of [mesh.heNext, mesh.hePrev, mesh.heVertex, mesh.heFace]) [array[x], array[y]] = [array[y], array[x]];
+  for (let v = 0; v < mesh.vertexSlots; v++) mesh.vHalfedge[v] = swap(mesh.vHalfedge[v]);
+  for (let f = 0; f < mesh.faceSlots; f++) mesh.fHalfedge[f] = swap(mesh.fHalfedge[f]);
+}
+
 /** Collapses edges picked by `pick` until none can be collapsed; returns how many were. */
 function collapseAll(mesh: HalfedgeMesh, pick: (n: number) => number): number {
   let collapsed = 0;
@@ -35,6 +47,24 @@ describe('collapseEdge', () => {
     expect(removed.vertices).toEqual(Int32Array.of(gone));
     expect(removed.edges).toHaveLength(3);
     expect(removed.faces).toHaveLength(2);
+  });
+
+  it('collapses a boundary ear edge stored with its boundary halfedge first', () => {
+    // the builder always puts the boundary halfedge second (2e + 1); edits do not, so relabel one
+    // edge of a strip's end triangle: 2e runs along the hole, and the triangle's next side from
+    // the vanishing end is on the boundary too (an "ear")
+    const mesh = meshOf(strip(3));
+    const ear = [...mesh.edges()].find((e) => {
+      const inner = 2 * e;
+      return mesh.heFace[inner + 1] === -1 && mesh.heNext[inner + 1] === (mesh.hePrev[inner] ^ 1);
+    })!;
+    swapHalfedges(mesh, ear);
+    expect(mesh.heFace[2 * ear]).toBe(-1);
+    expect(validate(mesh)).toEqual([]);
+    const { vertex } = checkedEdit(mesh, (m) => collapseEdge(m, ear));
+    // the survivor's handle is live and leaves it, so its one-ring can be walked
+    expect(mesh.isHalfedgeDeleted(mesh.vHalfedge[vertex])).toBe(false);
+    expect(mesh.heVertex[mesh.vHalfedge[vertex]]).toBe(vertex);
   });
 
   it('skips the change list when told not to record, for bulk use', () => {

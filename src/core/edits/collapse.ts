@@ -137,8 +137,9 @@ export function collapseEdge(mesh: HalfedgeMesh, e: number, options: CollapseOpt
   const f1 = heFace[t];
   const triangle0 = f0 !== -1 && isTriangleLoop(mesh, h);
   const triangle1 = f1 !== -1 && isTriangleLoop(mesh, t);
-  // a halfedge that will still leave a afterwards, to rotate from
-  const survivor = triangle0 ? hePrev[h] ^ 1 : heNext[h];
+  // a halfedge that will still leave a afterwards, to rotate from: the one after t (it leaves a,
+  // and each side's repair keeps it, where the one after h may go with a boundary ear)
+  const survivor = heNext[t];
 
   mesh.vertexAttributes.blend(a, [a, b], [0.5, 0.5]);
   if (options.position) mesh.setPosition(a, options.position[0], options.position[1], options.position[2]);
