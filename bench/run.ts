@@ -10,9 +10,10 @@ import { type BenchCase, type BenchResult, combine, measure, type SideResult } f
 import { buildCases } from './cases/build.js';
 import { cutCases } from './cases/cut.js';
 import { parseCases } from './cases/parse.js';
+import { smoothDecimateCases } from './cases/smooth-decimate.js';
 import { subdivisionCases } from './cases/subdivision.js';
 
-const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases, subdivisionCases, cutCases];
+const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases, subdivisionCases, cutCases, smoothDecimateCases];
 
 const args = process.argv.slice(2);
 const valueOf = (flag: string) => {

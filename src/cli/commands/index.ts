@@ -1,6 +1,8 @@
 /** The CLI's commands, by name. Each lives in its own file. */
 import { convert } from './convert.js';
 import { cutCommand } from './cut.js';
+import { decimateCommand } from './decimate.js';
+import { smoothCommand } from './smooth.js';
 import { stats } from './stats.js';
 import { subdivideCommand } from './subdivide.js';
 import { validateCommand } from './validate.js';
@@ -18,4 +20,6 @@ export const commands: Record<string, Command> = {
   convert,
   subdivide: subdivideCommand,
   cut: cutCommand,
+  smooth: smoothCommand,
+  decimate: decimateCommand,
 };

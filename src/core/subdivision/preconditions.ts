@@ -4,6 +4,7 @@
  */
 import { InvalidInputError, TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
+import { needsTriangles } from '../triangles.js';
 
 export type SubdivisionScheme = 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3';
 
@@ -26,15 +27,8 @@ const schemeNames: Record<SubdivisionScheme, string> = {
 export function cannotSubdivide(mesh: HalfedgeMesh, scheme: SubdivisionScheme): string | null {
   if (!Object.hasOwn(schemeNames, scheme)) unknownScheme(scheme);
   if (scheme === 'catmull-clark') return null;
-  const { heNext, fHalfedge, fDeleted } = mesh;
-  for (let f = 0; f < mesh.faceSlots; f++) {
-    if (fDeleted[f]) continue;
-    const h = fHalfedge[f];
-    if (heNext[heNext[heNext[h]]] !== h) {
-      return `${schemeNames[scheme]} needs triangles; f${f} is ${polygonName(mesh.faceDegree(f))}. Triangulate the mesh first.`;
-    }
-  }
-  return null;
+  const reason = needsTriangles(mesh, schemeNames[scheme]);
+  return reason && `${reason} Triangulate the mesh first.`;
 }
 
 /** Throws the error for a scheme name outside `SubdivisionScheme` (from untyped callers). */
@@ -58,9 +52,4 @@ export function startLevel(mesh: HalfedgeMesh): void {
   for (const set of [mesh.halfedgeAttributes, mesh.edgeAttributes]) {
     for (const { name } of [...set]) set.remove(name);
   }
-}
-
-function polygonName(degree: number): string {
-  const names: Record<number, string> = { 4: 'a quad', 5: 'a pentagon', 6: 'a hexagon' };
-  return names[degree] ?? `a polygon of ${degree} sides`;
 }

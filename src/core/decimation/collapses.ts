@@ -1,0 +1,330 @@
+/**
+ * The machinery of quadric decimation: each vertex's quadric, each edge's planned collapse (where
+ * the merged vertex goes and what that costs), the queue, and the loop that collapses the cheapest
+ * edge again and again. `index.ts` runs it in phases.
+ *
+ * Boundaries: a boundary vertex stays exactly where it is, so an open surface keeps its rim.
+ *   - An edge with one end on the boundary collapses onto that end (the interior end moves).
+ *   - A boundary edge collapses onto one of its two ends (whichever costs less): the rim loses a
+ *     vertex but every vertex left on it is an original one.
+ *   - An interior edge with both ends on the boundary never collapses (it would pinch the surface).
+ * On top of that, each boundary edge adds a *constraint plane* to the quadrics of its ends (the
+ * plane through the edge, perpendicular to its face, weighted heavily), as Garland and Heckbert
+ * do: moving a rim vertex off the line of its boundary edges costs a lot, so the rim is simplified
+ * only where it is straight, or when nothing cheaper is left.
+ *
+ * Before each collapse, `canCollapseEdge` checks the topology (the link condition, no pinch, no
+ * dangling edge) and `keepsOrientation` the geometry: no triangle around the two ends may turn
+ * its normal by 90° or more, or lose all its area, so the surface never folds over itself. A
+ * refused edge leaves the queue; it comes back when one of its ends survives a later collapse,
+ * and, should the queue run dry before the target, every edge gets one more chance (as long as
+ * the round before collapsed something).
+ */
+import { canCollapseEdge, collapseEdge } from '../edits/collapse.js';
+import type { HalfedgeMesh } from '../mesh.js';
+import { CollapseQueue } from './queue.js';
+import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError } from './quadric.js';
+
+/** Weight of a boundary edge's constraint plane, per unit of the edge's squared length. */
+const BOUNDARY_WEIGHT = 1000;
+
+/** Ids the collapses of one batch removed, and the vertices that survived them. */
+export interface BatchLists {
+  vertices: number[];
+  edges: number[];
+  faces: number[];
+  survivors: number[];
+}
+
+export class Decimator {
+  readonly mesh: HalfedgeMesh;
+  /** The mesh's positions (a collapse never reallocates them). */
+  private readonly positions: Float64Array;
+  /** QUADRIC_SIZE numbers per vertex slot (see `quadric.ts`). */
+  private readonly quadrics: Float64Array;
+  /** 1 where the vertex is on the boundary: the mesh says so too, but in two cache misses. */
+  private readonly onBoundary: Uint8Array;
+  /** 1 where the edge has an entry in the queue (it never has two). */
+  private readonly queued: Uint8Array;
+  private readonly queue: CollapseQueue;
+  /** Largest mean squared distance a merged vertex may have from its original planes. */
+  private readonly maxSquaredError: number;
+  /** Collapses made, and refused by a check that a later collapse could change, since the last fill. */
+  private collapsedSinceFill = 0;
+  private refusedSinceFill = 0;
+  /** True once no allowed collapse is left. */
+  exhausted = false;
+
+  /** Scratch: the summed quadric of an edge's ends, and the best point found for it. */
+  private readonly sum = new Float64Array(QUADRIC_SIZE);
+  private readonly point = new Float64Array(3);
+  private bestCost = Infinity;
+
+  constructor(mesh: HalfedgeMesh, maxError: number) {
+    this.mesh = mesh;
+    this.positions = mesh.positions;
+    this.quadrics = vertexQuadrics(mesh);
+    this.onBoundary = new Uint8Array(mesh.vertexSlots);
+    for (let v = 0; v < mesh.vertexSlots; v++) this.onBoundary[v] = mesh.isBoundaryVertex(v) ? 1 : 0;
+    this.queued = new Uint8Array(mesh.edgeSlots);
+    this.queue = new CollapseQueue(mesh.edgeSlots);
+    this.maxSquaredError = maxError * maxError;
+  }
+
+  /** Plans every live edge and builds the queue from scratch. */
+  fillQueue(): void {
+    const { mesh, queue, queued } = this;
+    queue.clear();
+    queued.fill(0);
+    for (let e = 0; e < mesh.edgeSlots; e++) {
+      if (mesh.eDeleted[e]) continue;
+      const cost = this.plan(e);
+      if (cost === Infinity) continue;
+      queue.append(cost, e);
+      queued[e] = 1;
+    }
+    queue.heapify();
+    this.collapsedSinceFill = 0;
+    this.refusedSinceFill = 0;
+  }
+
+  /**
+   * Collapses the cheapest allowed edges until the mesh has at most `faceGoal` faces or nothing
+   * allowed is left; lists what it removed and kept into `lists` when given.
+   */
+  collapseUntil(faceGoal: number, lists: BatchLists | null): void {
+    const { mesh, queue, queued, quadrics: q, point } = this;
+    const { heVertex, hePrev, vHalfedge, eDeleted } = mesh; // a collapse never reallocates them
+    const placeAtPoint = { record: false, position: point };
+    while (mesh.nFaces > faceGoal && !this.exhausted) {
+      // the queue ran dry: once more with every edge, if a collapse may have freed a refused one
+      if (queue.size === 0) {
+        if (this.collapsedSinceFill === 0 || this.refusedSinceFill === 0) {
+          this.exhausted = true;
+          break;
+        }
+        this.fillQueue();
+        continue;
+      }
+      const e = queue.topEdge;
+      const filedCost = queue.topCost;
+      queue.pop();
+      // deleted since it was queued?
+      if (eDeleted[e]) continue;
+      queued[e] = 0;
+      const cost = this.plan(e);
+      if (cost === Infinity) continue;
+      // filed under a cost that has gone up since: is it still the cheapest?
+      if (cost > filedCost && queue.size > 0 && cost > queue.topCost) {
+        queue.push(cost, e);
+        queued[e] = 1;
+        continue;
+      }
+      const a = heVertex[2 * e];
+      const b = heVertex[2 * e + 1];
+      // too far from the original surface? (its cost only grows, so this edge is done)
+      if (cost > this.maxSquaredError * (q[QUADRIC_SIZE * a + AREA] + q[QUADRIC_SIZE * b + AREA])) continue;
+      // would it break the surface, or fold it over?
+      if (canCollapseEdge(mesh, e) !== null || !keepsOrientation(mesh, e, point[0], point[1], point[2])) {
+        this.refusedSinceFill++;
+        continue;
+      }
+
+      // collapse: a survives at the planned point and stands for the planes of both ends
+      const { removed } = collapseEdge(mesh, e, placeAtPoint);
+      for (let k = 0; k < QUADRIC_SIZE; k++) q[QUADRIC_SIZE * a + k] += q[QUADRIC_SIZE * b + k];
+      this.onBoundary[a] |= this.onBoundary[b];
+      this.collapsedSinceFill++;
+      if (lists) {
+        lists.vertices.push(...(removed.vertices ?? []));
+        lists.edges.push(...(removed.edges ?? []));
+        lists.faces.push(...(removed.faces ?? []));
+        lists.survivors.push(a);
+      }
+
+      // the survivor's edges that are queued keep their entries (now lower bounds); the others
+      // (refused before, or too costly) get a new chance, as the neighbourhood has changed
+      const start = vHalfedge[a];
+      let h = start;
+      do {
+        const g = h >> 1;
+        if (!queued[g]) {
+          const gCost = this.plan(g);
+          if (gCost < Infinity) {
+            queue.push(gCost, g);
+            queued[g] = 1;
+          }
+        }
+        h = hePrev[h] ^ 1;
+      } while (h !== start);
+    }
+  }
+
+  /** For each vertex slot, the cost of the cheapest collapse of its edges as planned now (NaN: none). */
+  cheapestCollapses(): Float32Array {
+    const { mesh } = this;
+    const cheapest = new Float32Array(mesh.vertexSlots).fill(Infinity);
+    for (let e = 0; e < mesh.edgeSlots; e++) {
+      if (mesh.eDeleted[e]) continue;
+      const cost = this.plan(e);
+      const a = mesh.heVertex[2 * e];
+      const b = mesh.heVertex[2 * e + 1];
+      if (cost < cheapest[a]) cheapest[a] = cost;
+      if (cost < cheapest[b]) cheapest[b] = cost;
+    }
+    for (let v = 0; v < cheapest.length; v++) if (cheapest[v] === Infinity) cheapest[v] = NaN;
+    return cheapest;
+  }
+
+  /**
+   * Plans the collapse of edge `e`: puts where its merged vertex goes into `point` and returns
+   * what that costs (the summed quadric of the two ends, evaluated there), or Infinity when the
+   * edge may never collapse.
+   */
+  private plan(e: number): number {
+    const { mesh, quadrics: q, sum, positions: p } = this;
+    const { heVertex, heFace } = mesh;
+    const a = heVertex[2 * e];
+    const b = heVertex[2 * e + 1];
+    const aOnBoundary = this.onBoundary[a] === 1;
+    const bOnBoundary = this.onBoundary[b] === 1;
+    for (let k = 0; k < QUADRIC_SIZE; k++) sum[k] = q[QUADRIC_SIZE * a + k] + q[QUADRIC_SIZE * b + k];
+    this.bestCost = Infinity;
+
+    // one end on the boundary: onto that end
+    if (aOnBoundary !== bOnBoundary) {
+      this.consider(aOnBoundary ? a : b);
+    }
+    // both ends on the boundary: along a boundary edge onto either end, across the surface never
+    else if (aOnBoundary) {
+      if (heFace[2 * e] === -1 || heFace[2 * e + 1] === -1) {
+        this.consider(a);
+        this.consider(b);
+      }
+    }
+    // inside: the best point, or the best of the ends and the middle when the planes allow a range
+    else if (optimalPoint(sum, 0, this.point)) {
+      this.bestCost = quadricError(sum, 0, this.point[0], this.point[1], this.point[2]);
+    } else {
+      this.consider(a);
+      this.consider(b);
+      this.considerPoint((p[3 * a] + p[3 * b]) / 2, (p[3 * a + 1] + p[3 * b + 1]) / 2, (p[3 * a + 2] + p[3 * b + 2]) / 2);
+    }
+    return this.bestCost;
+  }
+
+  /** Keeps vertex `v`'s position in `point` when the summed quadric is smaller there. */
+  private consider(v: number): void {
+    const p = this.positions;
+    this.considerPoint(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
+  }
+
+  private considerPoint(x: number, y: number, z: number): void {
+    const cost = quadricError(this.sum, 0, x, y, z);
+    if (cost < this.bestCost) {
+      this.bestCost = cost;
+      this.point[0] = x;
+      this.point[1] = y;
+      this.point[2] = z;
+    }
+  }
+}
+
+/**
+ * Each vertex's quadric: the planes of its triangles weighted by their areas (a large triangle
+ * says more about the surface than a sliver), plus a constraint plane for each boundary edge.
+ */
+function vertexQuadrics(mesh: HalfedgeMesh): Float64Array {
+  const { heNext, heVertex, heFace, fHalfedge, fDeleted } = mesh;
+  const p = mesh.positions;
+  const q = new Float64Array(QUADRIC_SIZE * mesh.vertexSlots);
+  for (let f = 0; f < mesh.faceSlots; f++) {
+    if (fDeleted[f]) continue;
+    const h0 = fHalfedge[f];
+    const a = 3 * heVertex[h0];
+    const b = 3 * heVertex[heNext[h0]];
+    const c = 3 * heVertex[heNext[heNext[h0]]];
+    const ux = p[b] - p[a];
+    const uy = p[b + 1] - p[a + 1];
+    const uz = p[b + 2] - p[a + 2];
+    const vx = p[c] - p[a];
+    const vy = p[c + 1] - p[a + 1];
+    const vz = p[c + 2] - p[a + 2];
+    let nx = uy * vz - uz * vy;
+    let ny = uz * vx - ux * vz;
+    let nz = ux * vy - uy * vx;
+    const length = Math.sqrt(nx * nx + ny * ny + nz * nz);
+    // zero area: no plane to keep
+    if (length === 0) continue;
+    nx /= length;
+    ny /= length;
+    nz /= length;
+    const d = -(nx * p[a] + ny * p[a + 1] + nz * p[a + 2]);
+    const area = length / 2;
+    let h = h0;
+    do {
+      const v = heVertex[h];
+      addPlane(q, QUADRIC_SIZE * v, nx, ny, nz, d, area);
+      q[QUADRIC_SIZE * v + AREA] += area;
+      // boundary edge: the plane through it, perpendicular to the face, for both its ends
+      if (heFace[h ^ 1] === -1) {
+        const w = heVertex[heNext[h]];
+        const ex = p[3 * w] - p[3 * v];
+        const ey = p[3 * w + 1] - p[3 * v + 1];
+        const ez = p[3 * w + 2] - p[3 * v + 2];
+        const edgeLength = Math.sqrt(ex * ex + ey * ey + ez * ez);
+        // (edge × normal) / |edge| has unit length: the normal is a unit vector perpendicular to the edge
+        const mx = (ey * nz - ez * ny) / edgeLength;
+        const my = (ez * nx - ex * nz) / edgeLength;
+        const mz = (ex * ny - ey * nx) / edgeLength;
+        const md = -(mx * p[3 * v] + my * p[3 * v + 1] + mz * p[3 * v + 2]);
+        const weight = BOUNDARY_WEIGHT * edgeLength * edgeLength;
+        addPlane(q, QUADRIC_SIZE * v, mx, my, mz, md, weight);
+        addPlane(q, QUADRIC_SIZE * w, mx, my, mz, md, weight);
+      }
+      h = heNext[h];
+    } while (h !== h0);
+  }
+  return q;
+}
+
+/**
+ * True when moving both ends of edge `e` to (x, y, z) leaves every other triangle around them
+ * facing within 90° of where it faced, with some area left. (The triangles beside `e` vanish.)
+ */
+export function keepsOrientation(mesh: HalfedgeMesh, e: number, x: number, y: number, z: number): boolean {
+  const { heNext, hePrev, heVertex, heFace } = mesh;
+  const p = mesh.positions;
+  const f0 = heFace[2 * e];
+  const f1 = heFace[2 * e + 1];
+  for (let start = 2 * e; start < 2 * e + 2; start++) {
+    const o = 3 * heVertex[start];
+    let h = start;
+    do {
+      const f = heFace[h];
+      if (f !== -1 && f !== f0 && f !== f1) {
+        // the triangle (v, u, w) around v = origin(h), before and after v moves
+        const u = 3 * heVertex[heNext[h]];
+        const w = 3 * heVertex[hePrev[h]];
+        const ux = p[u] - p[o];
+        const uy = p[u + 1] - p[o + 1];
+        const uz = p[u + 2] - p[o + 2];
+        const wx = p[w] - p[o];
+        const wy = p[w + 1] - p[o + 1];
+        const wz = p[w + 2] - p[o + 2];
+        const sx = p[u] - x;
+        const sy = p[u + 1] - y;
+        const sz = p[u + 2] - z;
+        const tx = p[w] - x;
+        const ty = p[w + 1] - y;
+        const tz = p[w + 2] - z;
+        // normal before · normal after
+        const turn =
+          (uy * wz - uz * wy) * (sy * tz - sz * ty) + (uz * wx - ux * wz) * (sz * tx - sx * tz) + (ux * wy - uy * wx) * (sx * ty - sy * tx);
+        if (turn <= 0) return false;
+      }
+      h = hePrev[h] ^ 1;
+    } while (h !== start);
+  }
+  return true;
+}
