@@ -337,6 +337,26 @@ export class HalfedgeMesh {
     this.deletedFaces++;
   }
 
+  /** Gives back the spare capacity growth left behind (arrays sized to the slots in use). */
+  trim(): void {
+    const { vertexSlots, edgeSlots, faceSlots } = this;
+    if (this.vHalfedge.length === vertexSlots && this.heNext.length === 2 * edgeSlots && this.fHalfedge.length === faceSlots) return;
+    const exact = <T extends Int32Array | Uint8Array>(array: T, length: number) => (array.length === length ? array : (array.slice(0, length) as T));
+    this.heNext = exact(this.heNext, 2 * edgeSlots);
+    this.hePrev = exact(this.hePrev, 2 * edgeSlots);
+    this.heVertex = exact(this.heVertex, 2 * edgeSlots);
+    this.heFace = exact(this.heFace, 2 * edgeSlots);
+    this.vHalfedge = exact(this.vHalfedge, vertexSlots);
+    this.fHalfedge = exact(this.fHalfedge, faceSlots);
+    this.vDeleted = exact(this.vDeleted, vertexSlots);
+    this.eDeleted = exact(this.eDeleted, edgeSlots);
+    this.fDeleted = exact(this.fDeleted, faceSlots);
+    this.vertexAttributes.resize(vertexSlots, vertexSlots);
+    this.halfedgeAttributes.resize(2 * edgeSlots, 2 * edgeSlots);
+    this.edgeAttributes.resize(edgeSlots, edgeSlots);
+    this.faceAttributes.resize(faceSlots, faceSlots);
+  }
+
   /** Recounts the deleted slots from the flags (after the arrays were replaced wholesale). */
   recountDeleted(): void {
     const count = (flags: Uint8Array, slots: number) => {

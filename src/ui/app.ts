@@ -16,7 +16,7 @@ import { renderHelp } from './panels/help.js';
 import { HistoryPanel } from './panels/history.js';
 import { renderHud } from './panels/hud.js';
 import { renderInspector } from './panels/inspector.js';
-import { renderLegend } from './panels/legend.js';
+import { renderLegend, renderValuesLegend } from './panels/legend.js';
 import { OperationsPanel } from './panels/operations.js';
 import { QuizPanel } from './panels/quiz.js';
 import { StepperPanel } from './panels/stepper.js';
@@ -69,7 +69,7 @@ export class App {
   private readonly selectionLayer = new HighlightLayer();
   private readonly hoverLayer = new HighlightLayer(0.55, 1.3);
   private readonly idLayer = new HighlightLayer();
-  private readonly phaseLayer = new HighlightLayer(0.85, 1.3);
+  private readonly phaseLayer = new HighlightLayer(0.85, 1.3, 9);
   private readonly tables: RecordTables;
   private readonly traversal: TraversalPanel;
   private readonly operations: OperationsPanel;
@@ -233,6 +233,9 @@ export class App {
     this.snapshot = snapshot;
     const mesh = (this.mesh = deserializeMesh(snapshot.mesh));
     this.surface.update(snapshot.render);
+    // while stepping, a phase may colour the vertices by a value it computed
+    const values = snapshot.stepping ? (snapshot.phase?.values?.vertices ?? null) : null;
+    renderValuesLegend(byId('values-legend'), this.surface.setVertexValues(values), `${snapshot.phase?.name ?? ''}: colour by value`);
     if (this.selection && !exists(mesh, this.selection)) this.selection = null;
     if (this.hovered && !exists(mesh, this.hovered)) this.hovered = null;
     this.path = this.path.filter((step) => exists(mesh, step.to));
@@ -480,7 +483,7 @@ export class App {
     const snapshot = this.snapshot;
     renderInspector(byId('record'), byId('convention-note'), this.mesh, this.selection, this.convention, (s) => this.select(s));
     renderBreadcrumb(byId('breadcrumb'), this.path);
-    if (this.mesh && snapshot) this.operations.update(this.mesh, this.selection, snapshot.cannotSubdivide);
+    if (this.mesh && snapshot) this.operations.update(this.mesh, this.selection, snapshot.unavailable);
     if (snapshot) {
       renderHud(byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
       renderFileInfo(byId('file-info'), snapshot.file, snapshot.report, (incident, kind, first) => this.showProblem(incident, kind, first));

@@ -69,8 +69,10 @@ export class History<Info> {
   /** Adds `mesh` after the current entry (dropping any entries that were undone). */
   push(label: string, mesh: HalfedgeMesh, info: Info): void {
     this.entries.length = this.index + 1;
+    mesh.trim(); // the history keeps it for good: no room to grow
     const previous = this.current;
     const delta = previous ? difference(previous, mesh, DELTA_SHARE * meshBytes(mesh)) : null;
+    if (previous && delta) shareUnchanged(previous, mesh, delta);
     const small = delta !== null;
     this.entries.push({ label, info, vertices: mesh.nVertices, faces: mesh.nFaces, mesh: small ? null : mesh, delta: small ? delta : null });
     this.index = this.entries.length - 1;
@@ -87,12 +89,25 @@ export class History<Info> {
     this.current = this.rebuild(index);
   }
 
-  /** Bytes the history holds (the current mesh counted once, whether stored or rebuilt). */
+  /** Bytes the history holds: whole meshes, differences and the current mesh, each array once. */
   bytes(): number {
+    const counted = new Set<ArrayBufferLike>();
     let total = 0;
-    for (const entry of this.entries) total += entry.mesh ? meshBytes(entry.mesh) : entry.delta!.bytes;
-    const currentStored = this.entries[this.index]?.mesh === this.current;
-    return total + (this.current && !currentStored ? meshBytes(this.current) : 0);
+    const count = (array: { buffer: ArrayBufferLike; byteLength: number }) => {
+      if (counted.has(array.buffer)) return;
+      counted.add(array.buffer);
+      total += array.buffer.byteLength;
+    };
+    for (const mesh of [...this.entries.map((entry) => entry.mesh), this.current]) {
+      if (mesh) for (const array of arraysOf(mesh).values()) count(array);
+    }
+    for (const { delta } of this.entries) {
+      for (const change of delta?.arrays.values() ?? []) {
+        if ('dense' in change) count(change.dense);
+        else [change.indices, change.values].forEach(count);
+      }
+    }
+    return total;
   }
 
   private rebuild(index: number): HalfedgeMesh {
@@ -159,10 +174,36 @@ function difference(before: HalfedgeMesh, after: HalfedgeMesh, budget: number): 
     const dense = changed.length * 12 >= array.byteLength;
     bytes += dense ? array.byteLength : 12 * changed.length;
     if (bytes > budget) return null;
-    if (dense) arrays.set(key, { dense: array.slice() });
+    // a dense change is the new array itself, shared with `after` (which is never changed again)
+    if (dense) arrays.set(key, { dense: array });
     else arrays.set(key, { indices: Int32Array.from(changed), values: Float64Array.from(changed, (i) => array[i]!) });
   }
   return { slots: { vertices: after.vertexSlots, edges: after.edgeSlots, faces: after.faceSlots }, arrays, bytes };
+}
+
+/**
+ * Where `delta` found an array unchanged, `mesh` takes the previous mesh's array itself: the two
+ * share it (neither is ever changed again), so smoothing costs the history its positions only.
+ */
+function shareUnchanged(previous: HalfedgeMesh, mesh: HalfedgeMesh, delta: MeshDelta): void {
+  const sameSlots =
+    previous.vertexSlots === mesh.vertexSlots && previous.edgeSlots === mesh.edgeSlots && previous.faceSlots === mesh.faceSlots;
+  if (!sameSlots) return;
+  const fields = ['heNext', 'hePrev', 'heVertex', 'heFace', 'vHalfedge', 'fHalfedge', 'vDeleted', 'eDeleted', 'fDeleted'] as const;
+  for (const field of fields) {
+    if (!delta.arrays.has(field)) (mesh as unknown as Record<string, unknown>)[field] = previous[field];
+  }
+  const sets = [
+    ['v', previous.vertexAttributes, mesh.vertexAttributes],
+    ['h', previous.halfedgeAttributes, mesh.halfedgeAttributes],
+    ['e', previous.edgeAttributes, mesh.edgeAttributes],
+    ['f', previous.faceAttributes, mesh.faceAttributes],
+  ] as const;
+  for (const [prefix, before, after] of sets) {
+    for (const attribute of after) {
+      if (!delta.arrays.has(`${prefix}:${attribute.name}`)) attribute.data = before.get(attribute.name)!.data;
+    }
+  }
 }
 
 /** Turns the entry before's mesh into this entry's, in place. */

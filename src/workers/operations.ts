@@ -24,13 +24,17 @@ import {
   triangulateMesh,
 } from '../core/edits/index.js';
 import { type KeepSide, planeCut } from '../core/cut/index.js';
+import { cannotDecimate, type DecimationOptions, decimation } from '../core/decimation/index.js';
 import { type HalfedgeMesh, type Operation, TopologyError } from '../core/index.js';
+import { cannotSmooth, smoothing, type SmoothingOptions } from '../core/smoothing/index.js';
 import { cannotSubdivide, type SubdivisionScheme, subdivisionOperation } from '../core/subdivision/index.js';
 
 export type OperationRequest =
   /** `level`: how many levels of the scheme ran before (√3 splits an open mesh's boundary on odd levels). */
   | { kind: 'subdivide'; scheme: SubdivisionScheme; level?: number }
-  | { kind: 'cut'; plane: [number, number, number, number]; keep?: KeepSide; cap?: boolean };
+  | { kind: 'cut'; plane: [number, number, number, number]; keep?: KeepSide; cap?: boolean }
+  | { kind: 'smooth'; options: SmoothingOptions }
+  | { kind: 'decimate'; options: DecimationOptions };
 
 export type EditRequest =
   | { kind: 'flip-edge'; edge: number }
@@ -61,8 +65,16 @@ export function operationLabel(request: OperationRequest): string {
       const [a, b, c, d] = request.plane.map((x) => +x.toFixed(4));
       return `plane cut ${a}x + ${b}y + ${c}z + ${d} = 0`;
     }
+    case 'smooth': {
+      const { method, iterations = 10 } = request.options;
+      return `${smoothingNames[method] ?? method} smoothing, ${iterations} iteration${iterations === 1 ? '' : 's'}`;
+    }
+    case 'decimate':
+      return request.options.targetFaces !== undefined ? `decimate to ${request.options.targetFaces} faces` : 'decimate';
   }
 }
+
+const smoothingNames: Record<string, string> = { laplacian: 'uniform Laplacian', cotan: 'cotangent Laplacian', taubin: 'Taubin' };
 
 /** Null when the operation applies to `mesh`, else the sentence saying why not. */
 export function cannotStart(mesh: HalfedgeMesh, request: OperationRequest): string | null {
@@ -71,6 +83,10 @@ export function cannotStart(mesh: HalfedgeMesh, request: OperationRequest): stri
       return cannotSubdivide(mesh, request.scheme);
     case 'cut':
       return mesh.nFaces === 0 ? 'there are no faces to cut' : null;
+    case 'smooth':
+      return cannotSmooth(mesh, request.options);
+    case 'decimate':
+      return cannotDecimate(mesh, request.options);
   }
 }
 
@@ -90,6 +106,14 @@ export function startOperation(mesh: HalfedgeMesh, request: OperationRequest): {
     }
     case 'cut':
       return { operation: planeCut(mesh, request.plane, { keep: request.keep, cap: request.cap }), phases: CUT_PHASES };
+    case 'smooth': {
+      // one phase per iteration; Taubin's shrink and inflate steps are a phase each
+      const iterations = request.options.iterations ?? 10;
+      return { operation: smoothing(mesh, request.options), phases: request.options.method === 'taubin' ? 2 * iterations : iterations };
+    }
+    case 'decimate':
+      // as many batches as it takes
+      return { operation: decimation(mesh, request.options), phases: null };
   }
 }
 

@@ -92,9 +92,14 @@ export interface Snapshot {
   diff: PointerDiff | null;
   stepping: SteppingState | null;
   history: { items: HistoryItem[]; index: number };
-  /** Why each subdivision scheme does not apply to this mesh (null: it does). */
-  cannotSubdivide: Record<SubdivisionScheme, string | null>;
+  /**
+   * Why an operation that checks every face does not apply to this mesh (null: it does): each
+   * subdivision scheme, cotangent smoothing and decimation (they need triangles).
+   */
+  unavailable: Record<CheckedOperation, string | null>;
 }
+
+export type CheckedOperation = SubdivisionScheme | 'cotan' | 'decimate';
 
 export interface ProgressEvent {
   label: string;

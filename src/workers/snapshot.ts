@@ -4,12 +4,13 @@
  * the page shows. Everything that takes time in proportion to the mesh is computed here, in the
  * worker, so the page's thread only uploads buffers and stays responsive.
  */
-import { faceNormal, type HalfedgeMesh, meshStats, serializeMesh, validate } from '../core/index.js';
+import { cannotDecimate, faceNormal, type HalfedgeMesh, meshStats, serializeMesh, validate } from '../core/index.js';
+import { cannotSmooth } from '../core/smoothing/index.js';
 import { cannotSubdivide, subdivisionSchemes } from '../core/subdivision/index.js';
 import type { RenderBuffers, Snapshot } from './protocol.js';
 import { triangulateFaces } from './triangulate.js';
 
-type Computed = 'mesh' | 'render' | 'stats' | 'problems' | 'cannotSubdivide';
+type Computed = 'mesh' | 'render' | 'stats' | 'problems' | 'unavailable';
 
 export function makeSnapshot(mesh: HalfedgeMesh, extras: Omit<Snapshot, Computed>): Snapshot {
   return {
@@ -18,8 +19,18 @@ export function makeSnapshot(mesh: HalfedgeMesh, extras: Omit<Snapshot, Computed
     render: renderBuffers(mesh),
     stats: meshStats(mesh, extras.report ?? undefined),
     problems: validate(mesh, { limit: 200 }),
-    cannotSubdivide: Object.fromEntries(subdivisionSchemes.map((scheme) => [scheme, cannotSubdivide(mesh, scheme)])) as Snapshot['cannotSubdivide'],
+    unavailable: unavailable(mesh),
   };
+}
+
+/** The checks of every face that the page would otherwise run on its thread. */
+function unavailable(mesh: HalfedgeMesh): Snapshot['unavailable'] {
+  const reasons = Object.fromEntries(subdivisionSchemes.map((scheme) => [scheme, cannotSubdivide(mesh, scheme)]));
+  return {
+    ...reasons,
+    cotan: cannotSmooth(mesh, { method: 'cotan' }),
+    decimate: cannotDecimate(mesh),
+  } as Snapshot['unavailable'];
 }
 
 export function renderBuffers(mesh: HalfedgeMesh): RenderBuffers {

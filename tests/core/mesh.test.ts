@@ -75,6 +75,16 @@ describe('HalfedgeMesh storage', () => {
     expect(mesh.heNext.length).toBe(mesh.halfedgeSlots);
   });
 
+  it('trims the spare room growth left, keeping every element', () => {
+    const { mesh } = buildMesh(tetrahedron());
+    mesh.addVertex(1, 2, 3);
+    expect(mesh.vHalfedge.length).toBeGreaterThan(5);
+    mesh.trim();
+    expect([mesh.vHalfedge.length, mesh.positions.length, mesh.vDeleted.length]).toEqual([5, 15, 5]);
+    expect(mesh.position(4)).toEqual([1, 2, 3]);
+    expect(validate(mesh)).toEqual([]);
+  });
+
   it('clones deeply: editing the copy leaves the original alone', () => {
     const { mesh } = buildMesh(cube());
     mesh.vertexAttributes.add('weight', 'float32', 1).data.fill(7);

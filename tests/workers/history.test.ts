@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, type HalfedgeMesh, serializeMesh, subdivide, torus, uvSphere, validate } from '../../src/index.js';
+import { buildMesh, type HalfedgeMesh, serializeMesh, smooth, subdivide, torus, uvSphere, validate } from '../../src/index.js';
 import { History } from '../../src/workers/history.js';
 import { applyEdit } from '../../src/workers/operations.js';
 import { sphereWithFaces } from '../../bench/cases/build.js';
@@ -41,6 +41,22 @@ describe('History', () => {
       expect(arrays(history.mesh()!), `entry ${index}`).toEqual(expected[index]);
       expect(validate(history.mesh()!)).toEqual([]);
     }
+  });
+
+  it('shares the connectivity of a smoothed mesh with the mesh before it', () => {
+    const history = new History<null>();
+    const before = buildMesh(torus(20, 10)).mesh;
+    history.push('open', before, null);
+    const after = before.clone();
+    smooth(after, { method: 'laplacian', iterations: 2 });
+    history.push('smooth', after, null);
+    expect(after.heNext).toBe(before.heNext);
+    expect(after.positions).not.toBe(before.positions);
+    const positions = after.positions.byteLength;
+    // the mesh and the new positions (which the difference shares)
+    expect(history.bytes()).toBe(meshBytes(before) + positions);
+    history.moveTo(0);
+    expect(arrays(history.mesh()!)).toEqual(arrays(before));
   });
 
   it('keeps the whole mesh of an operation that changes everything', () => {

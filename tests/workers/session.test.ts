@@ -12,6 +12,7 @@ import {
   tetrahedron,
   TopologyError,
   torus,
+  uvSphere,
   validate,
   writeSoup,
 } from '../../src/index.js';
@@ -80,6 +81,35 @@ describe('EditingSession', () => {
       expect(session.snapshot().stepping).toBeNull();
       expect(boundaryEdges()).toBe(boundary);
     }
+  });
+
+  it('smooths in phases and keeps only the moved positions in the history', () => {
+    const session = sessionWith(writeSoup(uvSphere(20, 30), 'ply-binary'), 'sphere.ply');
+    const opened = session.historyBytes();
+    const started = session.start({ kind: 'smooth', options: { method: 'taubin', iterations: 2 } });
+    expect(started.stepping).toEqual({ label: 'Taubin smoothing, 2 iterations', phases: 0, total: 4 });
+    for (let i = 0; i < 4; i++) expect(session.step().problems).toEqual([]);
+    const done = session.snapshot();
+    expect(done.stepping).toBeNull();
+    expect(done.history.items.at(-1)?.label).toBe('Taubin smoothing, 2 iterations');
+    // the entry is a difference (positions only), not a second mesh
+    const positions = done.mesh.attributes.vertex.find((a) => a.name === 'position')!.data.byteLength;
+    expect(session.historyBytes()).toBeLessThan(opened + 2 * positions + 1000);
+  });
+
+  it('decimates in batches down to the target, refusing a quad mesh with the reason', () => {
+    const session = sessionWith(writeSoup(uvSphere(20, 30), 'off'), 'sphere.off');
+    expect(session.snapshot().unavailable.decimate).toBeNull();
+    session.start({ kind: 'decimate', options: { targetFaces: 200 } });
+    let snapshot = session.step();
+    expect(snapshot.phase?.values?.vertices).toBeDefined();
+    while (session.snapshot().stepping) snapshot = session.step();
+    expect(snapshot.stats.faces).toBeLessThanOrEqual(200);
+    expect(snapshot.problems).toEqual([]);
+    expect(snapshot.stats.genus).toBe(0);
+    const quads = sessionWith(cubeFile(), 'cube.off');
+    expect(quads.snapshot().unavailable.decimate).toMatch(/needs triangles/);
+    expect(() => quads.start({ kind: 'decimate', options: { targetFaces: 4 } })).toThrow(TopologyError);
   });
 
   it('cancels a stepped operation back to the mesh before it', () => {

@@ -5,7 +5,7 @@
  * predicates, asked here on the page's copy of the mesh.
  */
 import type { HalfedgeMesh } from '../../core/index.js';
-import type { SubdivisionScheme } from '../../core/subdivision/index.js';
+import type { CheckedOperation } from '../../workers/protocol.js';
 import { cannotEdit, cannotStart, type EditRequest, type OperationRequest } from '../../workers/operations.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
@@ -65,6 +65,26 @@ export class OperationsPanel {
   private readonly gizmoButton: HTMLButtonElement;
   private readonly rotateButton: HTMLButtonElement;
   private readonly cutButton: HTMLButtonElement;
+  private readonly smoothMethod = el(
+    'select',
+    { 'aria-label': 'Smoothing method' },
+    el('option', { value: 'taubin' }, 'Taubin λ|μ'),
+    el('option', { value: 'laplacian' }, 'Laplacian (uniform)'),
+    el('option', { value: 'cotan' }, 'Laplacian (cotangent)'),
+  );
+  private readonly iterations = el('input', { type: 'number', min: '1', step: '1', value: '10', 'aria-label': 'Smoothing iterations', class: 'small-input' });
+  private readonly lambda = el('input', { type: 'number', step: 'any', value: '0.5', 'aria-label': 'Shrink step λ', class: 'small-input' });
+  private readonly mu = el('input', { type: 'number', step: 'any', value: '-0.53', 'aria-label': 'Inflate step μ', class: 'small-input' });
+  private readonly boundary = el(
+    'select',
+    { 'aria-label': 'Boundary vertices' },
+    el('option', { value: 'fixed' }, 'boundary fixed'),
+    el('option', { value: 'smooth' }, 'boundary smoothed'),
+  );
+  private readonly smoothButton: HTMLButtonElement;
+  private readonly targetFaces = el('input', { type: 'number', min: '0', step: '1', 'aria-label': 'Faces to keep', class: 'small-input' });
+  private readonly decimateButton: HTMLButtonElement;
+  private unavailable: Record<CheckedOperation, string | null> | null = null;
   private readonly splitFrom = el('select', { 'aria-label': 'Split face from vertex' });
   private readonly splitTo = el('select', { 'aria-label': 'Split face to vertex' });
   private readonly splitButton: HTMLButtonElement;
@@ -99,6 +119,10 @@ export class OperationsPanel {
     );
     this.cutButton = el('button', { type: 'button', 'data-operation': 'cut', onclick: whenAvailable(() => actions.start(this.cutRequest())) }, 'Cut');
     this.splitButton = el('button', { type: 'button', 'data-edit': 'split-face', onclick: whenAvailable(() => this.runSplitFace()) }, 'Split face');
+    this.smoothButton = el('button', { type: 'button', 'data-operation': 'smooth', onclick: whenAvailable(() => actions.start(this.smoothRequest())) }, 'Smooth');
+    this.decimateButton = el('button', { type: 'button', 'data-operation': 'decimate', onclick: whenAvailable(() => actions.start(this.decimateRequest())) }, 'Decimate');
+    this.smoothMethod.addEventListener('change', () => this.updateChecked());
+    this.targetFaces.addEventListener('input', () => this.updateChecked());
     for (const input of this.plane) input.addEventListener('change', () => this.gizmoShown && actions.showPlane(this.planeValues()));
     for (const select of [this.splitFrom, this.splitTo]) select.addEventListener('change', () => this.updateSplitFace());
     replace(
@@ -108,6 +132,11 @@ export class OperationsPanel {
       el('h3', {}, 'Plane cut: a·x + b·y + c·z + d = 0'),
       el('div', { class: 'plane-row' }, ...this.plane.flatMap((input, i) => [el('span', {}, ['a', 'b', 'c', 'd'][i] + ' '), input])),
       el('div', { class: 'button-row' }, this.keep, el('label', {}, this.cap, ' cap'), this.gizmoButton, this.rotateButton, this.cutButton),
+      el('h3', {}, 'Smooth'),
+      el('div', { class: 'button-row' }, this.smoothMethod, this.boundary),
+      el('div', { class: 'button-row' }, el('label', {}, 'iterations ', this.iterations), el('label', {}, 'λ ', this.lambda), el('label', {}, 'μ ', this.mu), this.smoothButton),
+      el('h3', {}, 'Decimate (quadric error)'),
+      el('div', { class: 'button-row' }, el('label', {}, 'keep ', this.targetFaces, ' faces'), this.decimateButton),
       el('h3', {}, 'Edit the selection'),
       el('div', { class: 'button-row' }, ...this.editButtons),
       el('div', { class: 'button-row' }, 'from ', this.splitFrom, ' to ', this.splitTo, this.splitButton),
@@ -124,14 +153,48 @@ export class OperationsPanel {
     plane.forEach((value, i) => (this.plane[i].value = String(+value.toPrecision(6))));
   }
 
-  /** `cannotSubdivide` comes with the snapshot (checking every face is the worker's job). */
-  update(mesh: HalfedgeMesh, selection: Selection | null, cannotSubdivide: Record<SubdivisionScheme, string | null>): void {
+  /** `unavailable` comes with the snapshot (checking every face is the worker's job). */
+  update(mesh: HalfedgeMesh, selection: Selection | null, unavailable: Record<CheckedOperation, string | null>): void {
+    const newMesh = mesh !== this.mesh;
     this.mesh = mesh;
     this.selection = selection;
-    schemes.forEach(({ scheme, label }, i) => setAvailability(this.schemeButtons[i], `Start ${label} subdivision`, cannotSubdivide[scheme]));
+    this.unavailable = unavailable;
+    if (newMesh) this.targetFaces.value = String(Math.max(4, Math.floor(mesh.nFaces / 2)));
+    schemes.forEach(({ scheme, label }, i) => setAvailability(this.schemeButtons[i], `Start ${label} subdivision`, unavailable[scheme]));
     setAvailability(this.cutButton, 'Start the plane cut', cannotStart(mesh, this.cutRequest()));
+    this.updateChecked();
     edits.forEach(({ kind, label }, i) => setAvailability(this.editButtons[i], label, this.reasonAgainst(kind)));
     this.updateSplitFace();
+  }
+
+  private smoothRequest(): OperationRequest {
+    return {
+      kind: 'smooth',
+      options: {
+        method: this.smoothMethod.value as 'taubin' | 'laplacian' | 'cotan',
+        iterations: Number(this.iterations.value),
+        lambda: Number(this.lambda.value),
+        mu: Number(this.mu.value),
+        boundary: this.boundary.value as 'fixed' | 'smooth',
+      },
+    };
+  }
+
+  private decimateRequest(): OperationRequest {
+    return { kind: 'decimate', options: { targetFaces: Number(this.targetFaces.value) } };
+  }
+
+  /** The smoothing and decimation buttons: the worker's face checks, then the form's numbers. */
+  private updateChecked(): void {
+    const mesh = this.mesh;
+    const unavailable = this.unavailable;
+    if (!mesh || !unavailable) return;
+    const noFaces = mesh.nFaces === 0 ? 'there are no faces' : null;
+    const cotan = this.smoothMethod.value === 'cotan' ? unavailable.cotan : null;
+    setAvailability(this.smoothButton, 'Start smoothing', noFaces ?? cotan);
+    const target = Number(this.targetFaces.value);
+    const badTarget = !Number.isInteger(target) || target < 0 ? 'the number of faces to keep must be a whole number ≥ 0' : target >= mesh.nFaces ? `the mesh has only ${mesh.nFaces} faces` : null;
+    setAvailability(this.decimateButton, 'Start decimation', noFaces ?? unavailable.decimate ?? badTarget);
   }
 
   private cutRequest(): OperationRequest {

@@ -41,10 +41,14 @@ export class HighlightLayer {
   readonly group = new Group();
   private readonly dotTexture = roundDot();
 
-  /** `opacity` < 1 for the hover preview; `widthScale` makes the highlighted arrows stand out. */
+  /**
+   * `opacity` < 1 for the hover preview; `widthScale` makes the highlighted arrows stand out;
+   * `dotSize` (pixels) of vertex markers, smaller where a phase marks thousands of them.
+   */
   constructor(
     private readonly opacity = 1,
     private readonly widthScale = 2,
+    private readonly dotSize = 18,
   ) {}
 
   show(mesh: HalfedgeMesh, spec: HighlightSpec, scale: number): void {
@@ -97,7 +101,7 @@ export class HighlightLayer {
       }
       const dots = new Points(
         geometry(points, dotColors),
-        new PointsMaterial({ size: 18 * scale, sizeAttenuation: false, vertexColors: true, map: this.dotTexture, alphaTest: 0.5, transparent, opacity: this.opacity }),
+        new PointsMaterial({ size: this.dotSize * scale, sizeAttenuation: false, vertexColors: true, map: this.dotTexture, alphaTest: 0.5, transparent, opacity: this.opacity }),
       );
       dots.renderOrder = 3;
       this.group.add(withNoRaycast(dots));

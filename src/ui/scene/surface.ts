@@ -24,6 +24,7 @@ import {
 import { type Remote, transfer, wrap } from 'comlink';
 import type { RenderBuffers } from '../../workers/protocol.js';
 import { colors } from '../colors.js';
+import { type ColourScale, colourScale } from './colour-map.js';
 import type { PickingApi } from './picking.worker.js';
 
 /** Draw vertices as dots up to this many. */
@@ -102,6 +103,23 @@ export class SurfaceLayer {
     await this.workerReady;
     const hit = await this.pickingWorker!.raycast(raycaster.ray.origin.toArray(), raycaster.ray.direction.toArray());
     return hit ? { face: triangleFace[hit.triangle], point: new Vector3().fromArray(hit.point) } : null;
+  }
+
+  /**
+   * Colours the surface by a value per vertex (what a phase reports), or back to plain with null.
+   * Returns the scale, for the legend.
+   */
+  setVertexValues(values: ArrayLike<number> | null): ColourScale | null {
+    const materials = [this.front.material, this.back.material] as MeshStandardMaterial[];
+    const scale = values && values.length === this.faces.getAttribute('position').count ? colourScale(values) : null;
+    if (scale) this.faces.setAttribute('color', new BufferAttribute(scale.colours, 3));
+    else this.faces.deleteAttribute('color');
+    for (const material of materials) {
+      material.vertexColors = scale !== null;
+      material.color.set(scale ? '#ffffff' : material === this.front.material ? colors.surface : colors.surfaceBack);
+      material.needsUpdate = true;
+    }
+    return scale;
   }
 
   /** Line width and dot size, larger for a lecture hall. */
