@@ -120,6 +120,36 @@ test.describe('stepping operations, history and export', () => {
     await expect.poll(async () => (await stats(page)).faces).toBe(27);
   });
 
+  test('smooths and decimates from the Operate panel, stepping with a colour map', async ({ page }, testInfo) => {
+    await openApp(page, 'bunny.ply');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    const before = await stats(page);
+    await page.getByRole('spinbutton', { name: 'Faces to keep' }).fill('1000');
+    await page.locator('[data-operation="decimate"]').click();
+    await page.getByRole('button', { name: 'Step one phase (S)' }).click();
+    await expect(page.locator('.phase-title')).toContainText('compute quadrics');
+    await expect(page.locator('#values-legend')).toBeVisible();
+    await page.getByRole('button', { name: 'Step one phase (S)' }).click();
+    await page.screenshot({ path: testInfo.outputPath('decimation-batch.png') });
+    await page.getByRole('button', { name: 'Run to end (G)' }).click();
+    await expect.poll(async () => (await stats(page)).faces).toBeLessThanOrEqual(1000);
+    const after = await stats(page);
+    expect([after.genus, after.closed, await valid(page)]).toEqual([before.genus, before.closed, 'true']);
+    await expect(page.locator('#values-legend')).toBeHidden();
+
+    // cotangent weights need triangles: fine here; a quad mesh says why not
+    await page.getByRole('combobox', { name: 'Smoothing method' }).selectOption('taubin');
+    await page.getByRole('spinbutton', { name: 'Smoothing iterations' }).fill('3');
+    await page.locator('[data-operation="smooth"]').click();
+    await page.getByRole('button', { name: 'Run to end (G)' }).click();
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().history?.items.at(-1)?.label)).toBe('Taubin smoothing, 3 iterations');
+    expect((await stats(page)).faces).toBe(after.faces);
+    await page.evaluate(() => window.halfedgeLab.openSample('cube.off'));
+    await page.getByRole('combobox', { name: 'Smoothing method' }).selectOption('cotan');
+    await expect(page.locator('[data-operation="smooth"]')).toHaveAttribute('title', /needs triangles/);
+    await expect(page.locator('[data-operation="decimate"]')).toHaveAttribute('aria-disabled', 'true');
+  });
+
   test('exports the edited mesh and opens the exported file again', async ({ page }) => {
     await openApp(page, 'tetrahedron.off');
     await page.getByRole('tab', { name: 'Operate' }).click();
