@@ -169,7 +169,7 @@ class PlaneCut {
     const k = crossing.length + onPlane.length;
     mesh.reserve({ vertices: mesh.vertexSlots + 2 * k, edges: mesh.edgeSlots + 5 * k, faces: mesh.faceSlots + 3 * k });
 
-    const w = new PointerWriter(mesh, false);
+    const w = new PointerWriter(mesh, { record: false });
     for (const e of crossing) {
       const a = distance[mesh.heVertex[2 * e]];
       const b = distance[mesh.heVertex[2 * e + 1]];
@@ -190,7 +190,7 @@ class PlaneCut {
   }
 
   splitCrossedFaces(): Phase {
-    const w = new PointerWriter(this.mesh, false);
+    const w = new PointerWriter(this.mesh, { record: false });
     const split = splitCrossedFaces(w, this.side, this.onPlane, this.plane);
     const { created } = w.result();
     return {
@@ -206,7 +206,7 @@ class PlaneCut {
   separateSides(): Phase {
     const { mesh } = this;
     this.faceSide = faceSides(mesh, this.side, this.plane);
-    const w = new PointerWriter(mesh, false);
+    const w = new PointerWriter(mesh, { record: false });
     const { cutEdges, newEdges, cutVertices } = separateSides(w, this.onPlane, this.faceSide);
     for (const e of cutEdges) this.cutEdges.push(e);
     for (const e of newEdges) this.cutEdges.push(e);
@@ -247,7 +247,7 @@ class PlaneCut {
         explanation: 'Capping is off, so the cut stays open: each side keeps its loops of boundary edges. With capping on, each loop is filled with a flat polygon.',
       };
     }
-    const w = new PointerWriter(this.mesh, false);
+    const w = new PointerWriter(this.mesh, { record: false });
     const { caps, fanned, faces, open } = capLoops(w, this.cutEdges, this.faceSide, this.plane, sides);
     const { created, removed } = w.result();
     const fanNote = fanned

@@ -95,7 +95,8 @@ export class Decimator {
   collapseUntil(faceGoal: number, lists: BatchLists | null): void {
     const { mesh, queue, queued, quadrics: q, point } = this;
     const { heVertex, hePrev, vHalfedge, eDeleted } = mesh; // a collapse never reallocates them
-    const placeAtPoint = { record: false, position: point };
+    // in bulk: no change list, and the removed ids only when the batch lists them
+    const placeAtPoint = { record: false, ids: lists !== null, position: point };
     while (mesh.nFaces > faceGoal && !this.exhausted) {
       // the queue ran dry: once more with every edge, if a collapse may have freed a refused one
       if (queue.size === 0) {

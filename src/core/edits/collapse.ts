@@ -42,6 +42,10 @@ export interface CollapseOptions extends EditOptions {
   position?: ArrayLike<number>;
 }
 
+/** Scratch lists of the link condition, reused: decimation asks it a million times. */
+const neighboursOfB: number[] = [];
+const facesOfB: number[] = [];
+
 /**
  * Why edge `e` cannot be collapsed, or null when it can (the rules are listed above).
  * @example const why = canCollapseEdge(mesh, e); // "v3 and v7 (the ends of e5) are both joined to v9, …"
@@ -65,18 +69,15 @@ export function canCollapseEdge(mesh: HalfedgeMesh, e: number): string | null {
   if (c !== -1 && c === d) {
     return `the triangles beside e${e} (f${f0}, f${f1}) have the same three corners: collapsing e${e} would leave nothing of them`;
   }
-  for (const [g, x] of [
-    [h, c],
-    [t, d],
-  ]) {
-    if (x !== -1 && heFace[heNext[g] ^ 1] === -1 && heFace[hePrev[g] ^ 1] === -1) {
+  for (const g of [h, t]) {
+    if ((g === h ? c : d) !== -1 && heFace[heNext[g] ^ 1] === -1 && heFace[hePrev[g] ^ 1] === -1) {
       return `the other two edges of f${heFace[g]} are both on the boundary: collapsing e${e} would leave them as one dangling edge`;
     }
   }
 
   // the link condition: gather b's neighbours and faces, then look at a's
-  const neighboursOfB: number[] = [];
-  const facesOfB: number[] = [];
+  neighboursOfB.length = 0;
+  facesOfB.length = 0;
   let x = t;
   do {
     neighboursOfB.push(heVertex[x ^ 1]);
@@ -127,7 +128,7 @@ export function canCollapseEdge(mesh: HalfedgeMesh, e: number): string | null {
 export function collapseEdge(mesh: HalfedgeMesh, e: number, options: CollapseOptions = {}): VertexEditResult {
   const why = canCollapseEdge(mesh, e);
   if (why) throw new TopologyError(`collapseEdge: ${why}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const { heNext, hePrev, heVertex, heFace, vHalfedge } = mesh; // a collapse never grows the arrays
   const h = 2 * e;
   const t = h + 1;

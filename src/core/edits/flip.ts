@@ -53,7 +53,7 @@ export function canFlipEdge(mesh: HalfedgeMesh, e: number): string | null {
 export function flipEdge(mesh: HalfedgeMesh, e: number, options: EditOptions = {}): EditResult {
   const why = canFlipEdge(mesh, e);
   if (why) throw new TopologyError(`flipEdge: ${why}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const { heNext, heVertex, heFace, vHalfedge } = mesh;
   const h = 2 * e;
   const t = h + 1;

@@ -53,7 +53,7 @@ export function canMergeFaces(mesh: HalfedgeMesh, e: number): string | null {
 export function mergeFaces(mesh: HalfedgeMesh, e: number, options: EditOptions = {}): MergeResult {
   const why = canMergeFaces(mesh, e);
   if (why) throw new TopologyError(`mergeFaces: ${why}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
   const h = 2 * e;
   const t = h + 1;

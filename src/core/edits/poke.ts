@@ -33,7 +33,7 @@ export function canPokeFace(mesh: HalfedgeMesh, f: number): string | null {
 export function pokeFace(mesh: HalfedgeMesh, f: number, options: EditOptions = {}): VertexEditResult {
   const why = canPokeFace(mesh, f);
   if (why) throw new TopologyError(`pokeFace: ${why}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const sides: number[] = [];
   let h = mesh.fHalfedge[f];
   do {

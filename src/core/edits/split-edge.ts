@@ -68,7 +68,7 @@ export function splitEdge(mesh: HalfedgeMesh, e: number, options: SplitEdgeOptio
   const t = options.t ?? 0.5;
   const why = canSplitEdge(mesh, e, t);
   if (why) throw new TopologyError(`splitEdge: ${why}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const vertex = splitEdgeAt(w, e, t);
   return { ...w.result(), vertex };
 }
@@ -82,7 +82,7 @@ export function splitEdgeTriangulated(mesh: HalfedgeMesh, e: number, options: Sp
   const t = options.t ?? 0.5;
   const why = canSplitEdgeTriangulated(mesh, e, t);
   if (why) throw new TopologyError(`splitEdgeTriangulated: ${why}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const h = 2 * e;
   const vertex = splitEdgeAt(w, e, t);
   // (read the arrays afresh each time: a split may have grown them)

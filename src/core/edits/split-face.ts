@@ -57,7 +57,7 @@ export function canSplitFace(mesh: HalfedgeMesh, f: number, u: number, v: number
 export function splitFace(mesh: HalfedgeMesh, f: number, u: number, v: number, options: EditOptions = {}): FaceSplitResult {
   const why = canSplitFace(mesh, f, u, v);
   if (why) throw new TopologyError(`splitFace: ${why}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const edge = splitFaceAt(w, faceHalfedgeFrom(mesh, f, u), faceHalfedgeFrom(mesh, f, v));
   return { ...w.result(), edge };
 }

@@ -364,7 +364,7 @@ export function canTriangulateFace(mesh: HalfedgeMesh, f: number): string | null
 export function triangulateFace(mesh: HalfedgeMesh, f: number, options: EditOptions = {}): EditResult {
   const plan = planFace(mesh, f);
   if (typeof plan === 'string') throw new TopologyError(`triangulateFace: ${plan}`);
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   if (plan.ring.length > 3) fillRings(w, plan.ring, [], plan.triangles, f);
   return w.result();
 }
@@ -380,7 +380,7 @@ export interface TriangulateMeshResult extends EditResult {
  * @example triangulateMesh(buildMesh(cube()).mesh); // 6 quads → 12 triangles
  */
 export function triangulateMesh(mesh: HalfedgeMesh, options: EditOptions = {}): TriangulateMeshResult {
-  const w = new PointerWriter(mesh, options.record ?? true);
+  const w = new PointerWriter(mesh, options);
   const skipped: number[] = [];
   const faceSlots = mesh.faceSlots; // the new triangles need no visit
   for (let f = 0; f < faceSlots; f++) {

@@ -25,6 +25,8 @@ export interface EditOptions {
    * (decimation) pass false: the edit then costs only its stores.
    */
   record?: boolean;
+  /** List the elements the edit adds and deletes in `created` and `removed` (default true). */
+  ids?: boolean;
 }
 
 /** What a local edit did. */
@@ -55,14 +57,17 @@ const SLOT_ORDER = [0, 0, 0, 0, 1, 2];
 
 export class PointerWriter {
   private readonly before: Map<number, number> | null;
-  private readonly createdIds = { vertices: [] as number[], edges: [] as number[], faces: [] as number[] };
-  private readonly removedIds = { vertices: [] as number[], edges: [] as number[], faces: [] as number[] };
+  private readonly createdIds: IdLists | null;
+  private readonly removedIds: IdLists | null;
 
   constructor(
     readonly mesh: HalfedgeMesh,
-    record = true,
+    options: EditOptions = {},
   ) {
-    this.before = record ? new Map() : null;
+    this.before = options.record === false ? null : new Map();
+    const ids = options.ids !== false;
+    this.createdIds = ids ? { vertices: [], edges: [], faces: [] } : null;
+    this.removedIds = ids ? { vertices: [], edges: [], faces: [] } : null;
   }
 
   /** `next(h) = n` and `prev(n) = h`: the two always change together. */
@@ -99,27 +104,27 @@ export class PointerWriter {
   /** A new isolated vertex (attributes zero until the edit blends them). */
   addVertex(): number {
     const v = this.mesh.addVertex();
-    this.createdIds.vertices.push(v);
+    this.createdIds?.vertices.push(v);
     return v;
   }
 
   /** A new edge, halfedges `2e` and `2e + 1`, every pointer -1. */
   addEdge(): number {
     const e = this.mesh.addEdge();
-    this.createdIds.edges.push(e);
+    this.createdIds?.edges.push(e);
     return e;
   }
 
   addFace(): number {
     const f = this.mesh.addFace();
-    this.createdIds.faces.push(f);
+    this.createdIds?.faces.push(f);
     return f;
   }
 
   deleteVertex(v: number): void {
     if (this.before) this.remember(v, VERTEX_HALFEDGE, this.mesh.vHalfedge[v]);
     this.mesh.deleteVertex(v);
-    this.removedIds.vertices.push(v);
+    this.removedIds?.vertices.push(v);
   }
 
   /** Deletes both halfedges of `e` (every pointer of theirs becomes -1). */
@@ -134,13 +139,13 @@ export class PointerWriter {
       }
     }
     this.mesh.deleteEdge(e);
-    this.removedIds.edges.push(e);
+    this.removedIds?.edges.push(e);
   }
 
   deleteFace(f: number): void {
     if (this.before) this.remember(f, FACE_HALFEDGE, this.mesh.fHalfedge[f]);
     this.mesh.deleteFace(f);
-    this.removedIds.faces.push(f);
+    this.removedIds?.faces.push(f);
   }
 
   /** The changes (old → new, unchanged fields left out), and the elements added and deleted. */
@@ -175,8 +180,15 @@ export class PointerWriter {
   }
 }
 
-function toIds(lists: { vertices: number[]; edges: number[]; faces: number[] }): ElementIds {
+interface IdLists {
+  vertices: number[];
+  edges: number[];
+  faces: number[];
+}
+
+function toIds(lists: IdLists | null): ElementIds {
   const ids: ElementIds = {};
+  if (!lists) return ids;
   if (lists.vertices.length) ids.vertices = Int32Array.from(lists.vertices);
   if (lists.edges.length) ids.edges = Int32Array.from(lists.edges);
   if (lists.faces.length) ids.faces = Int32Array.from(lists.faces);
