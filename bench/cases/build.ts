@@ -38,7 +38,7 @@ export function buildCases(sizes: number[]): BenchCase[] {
       {
         case: 'build-sphere',
         size: sphereFaceCount(size),
-        repeat: size >= 1e6 ? 3 : 7,
+        repeat: 7,
         prepare() {
           sphere = sphereWithFaces(size);
           geometry = new BufferGeometry();
@@ -52,7 +52,7 @@ export function buildCases(sizes: number[]): BenchCase[] {
       {
         case: 'build-torus-quads',
         size: side * side,
-        repeat: size >= 1e6 ? 3 : 7,
+        repeat: 7,
         prepare: () => void (quads = torus(side, side)),
         run: () => buildMesh(quads),
         bytes: (result) => meshBytes((result as BuildResult).mesh),
