@@ -8,20 +8,46 @@
  * code cannot slow the next.
  */
 
+import type { HalfedgeMesh } from '../src/core/mesh.js';
+
 export interface BenchCase {
   /** Stable name, e.g. `build-sphere`. */
   case: string;
   /** Faces in the input (the scale the targets are stated in). Known without building anything. */
   size: number;
-  /** Builds the inputs; not timed. Heavy work belongs here, not in the case's factory. */
-  prepare?: () => void | Promise<void>;
+  /**
+   * Builds the inputs of one side (each side runs in its own process); not timed. Heavy work
+   * belongs here, not in the case's factory.
+   */
+  prepare?: (side: Side) => void | Promise<void>;
   /** Our implementation. Its result may be inspected by `bytes`. */
   run: () => unknown;
   /** Bytes held by our result (for memory-per-face targets). */
   bytes?: (result: unknown) => number;
   peer?: { name: string; run: () => unknown };
-  /** Repetitions (default 5); a warm-up run comes first. */
+  /** Repetitions (default 5, odd so the median is a run); a warm-up run comes first. */
   repeat?: number;
+}
+
+/**
+ * For a case whose operation changes the mesh it is given: copies made in `prepare`, one for each
+ * run (the warm-up included), so the time is the operation's alone, as for the peers, which do not
+ * change their input.
+ */
+export class PreparedCopies {
+  private copies: HalfedgeMesh[] = [];
+
+  constructor(private readonly runs: number) {}
+
+  fill(mesh: HalfedgeMesh): void {
+    this.copies = Array.from({ length: this.runs }, () => mesh.clone());
+  }
+
+  take(): HalfedgeMesh {
+    const copy = this.copies.pop();
+    if (!copy) throw new Error('more runs than prepared copies');
+    return copy;
+  }
 }
 
 /** What one side of a case measured, in its own process. */
@@ -45,9 +71,11 @@ export interface BenchResult {
   bytesPerFace?: number;
 }
 
+export type Side = 'ours' | 'peer';
+
 /** Prepares and times one side of a case (in the current process). */
-export async function measure(bench: BenchCase, side: 'ours' | 'peer'): Promise<SideResult> {
-  await bench.prepare?.();
+export async function measure(bench: BenchCase, side: Side): Promise<SideResult> {
+  await bench.prepare?.(side);
   const run = side === 'ours' ? bench.run : bench.peer!.run;
   let result = run(); // warm-up
   const times: number[] = [];

@@ -39,8 +39,9 @@ export function buildCases(sizes: number[]): BenchCase[] {
         case: 'build-sphere',
         size: sphereFaceCount(size),
         repeat: 7,
-        prepare() {
+        prepare(side) {
           sphere = sphereWithFaces(size);
+          if (side === 'ours') return;
           geometry = new BufferGeometry();
           geometry.setAttribute('position', new BufferAttribute(new Float32Array(sphere.positions), 3));
           geometry.setIndex(new BufferAttribute(sphere.faceIndices, 1));

@@ -1,34 +1,28 @@
 /**
  * The capped plane cut through a closed sphere of triangles. The plane is tilted and off-centre,
- * so it meets no row of vertices: every edge it crosses is split. Each run cuts a fresh copy of
- * the mesh (the copy is part of the time: `clone` of a million triangles is a few tens of ms).
+ * so it meets no row of vertices: every edge it crosses is split. Each run cuts its own copy of
+ * the mesh, made before the timing.
  */
 import { buildMesh } from '../../src/core/build.js';
 import { cutMesh, type KeepSide } from '../../src/core/cut/index.js';
-import type { HalfedgeMesh } from '../../src/core/mesh.js';
-import type { BenchCase } from '../harness.js';
+import { type BenchCase, PreparedCopies } from '../harness.js';
 import { sphereFaceCount, sphereWithFaces } from './build.js';
 
 const PLANE = [0.1, 0.2, 1, -0.05] as const;
 
 export function cutCases(sizes: number[]): BenchCase[] {
   return sizes.flatMap((size) => {
-    let sphere: HalfedgeMesh;
-    const cutCopy = (keep: KeepSide) => () => {
-      const mesh = sphere.clone();
-      cutMesh(mesh, PLANE, { keep });
-      return mesh;
+    const repeat = size >= 1e6 ? 5 : 9;
+    const cut = (keep: KeepSide): BenchCase => {
+      const copies = new PreparedCopies(repeat + 1);
+      return {
+        case: keep === 'both' ? 'cut-capped' : `cut-capped-keep-${keep}`,
+        size: sphereFaceCount(size),
+        repeat,
+        prepare: () => copies.fill(buildMesh(sphereWithFaces(size)).mesh),
+        run: () => cutMesh(copies.take(), PLANE, { keep }),
+      };
     };
-    const common = {
-      size: sphereFaceCount(size),
-      repeat: size >= 1e6 ? 5 : 9,
-      prepare() {
-        sphere = buildMesh(sphereWithFaces(size)).mesh;
-      },
-    };
-    return [
-      { ...common, case: 'cut-capped', run: cutCopy('both') },
-      { ...common, case: 'cut-capped-keep-below', run: cutCopy('below') },
-    ];
+    return [cut('both'), cut('below')];
   });
 }

@@ -14,7 +14,7 @@
  */
 import { BufferAttribute, BufferGeometry } from 'three';
 import { LoopSubdivision } from 'three-subdivide';
-import type { BenchCase } from '../harness.js';
+import { type BenchCase, PreparedCopies } from '../harness.js';
 import { buildMesh, type HalfedgeMesh, torus } from '../../src/index.js';
 import { subdivide, type SubdivisionScheme } from '../../src/core/subdivision/index.js';
 import { sphereFaceCount, sphereWithFaces } from './build.js';
@@ -26,20 +26,20 @@ export function subdivisionCases(sizes: number[]): BenchCase[] {
     const repeat = size >= 1e6 ? 3 : 5;
     const side = Math.round(Math.sqrt(size));
     const geometry = new BufferGeometry();
-    const loop = copiesFor('loop', repeat);
-    const catmullClark = copiesFor('catmull-clark', repeat);
+    const loop = new PreparedCopies(repeat + 1);
+    const catmullClark = new PreparedCopies(repeat + 1);
     return [
       {
         case: 'loop',
         size: sphereFaceCount(size),
         repeat,
-        prepare() {
+        prepare(side) {
           const sphere = sphereWithFaces(size);
-          loop.prepare(buildMesh(sphere).mesh);
+          if (side === 'ours') return loop.fill(buildMesh(sphere).mesh);
           geometry.setAttribute('position', new BufferAttribute(new Float32Array(sphere.positions), 3));
           geometry.setIndex(new BufferAttribute(sphere.faceIndices, 1));
         },
-        run: loop.run,
+        run: () => subdivide(loop.take(), 'loop'),
         peer:
           size <= peerFaceLimit
             ? { name: 'three-subdivide', run: () => LoopSubdivision.modify(geometry, 1, { split: false }) }
@@ -49,25 +49,9 @@ export function subdivisionCases(sizes: number[]): BenchCase[] {
         case: 'catmull-clark',
         size: side * side,
         repeat,
-        prepare: () => catmullClark.prepare(buildMesh(torus(side, side)).mesh),
-        run: catmullClark.run,
+        prepare: () => catmullClark.fill(buildMesh(torus(side, side)).mesh),
+        run: () => subdivide(catmullClark.take(), 'catmull-clark'),
       },
     ];
   });
-}
-
-/**
- * Subdivides a fresh copy of the prepared mesh on each run (the warm-up included). The result is
- * not returned: the harness would hold it while the next run allocates its own.
- */
-function copiesFor(scheme: SubdivisionScheme, repeat: number) {
-  let copies: HalfedgeMesh[] = [];
-  return {
-    prepare(mesh: HalfedgeMesh) {
-      copies = Array.from({ length: repeat + 1 }, () => mesh.clone());
-    },
-    run() {
-      subdivide(copies.pop()!, scheme);
-    },
-  };
 }

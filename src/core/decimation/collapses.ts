@@ -20,7 +20,7 @@
  * and, should the queue run dry before the target, every edge gets one more chance (as long as
  * the round before collapsed something).
  */
-import { canCollapseEdge, collapseEdge } from '../edits/collapse.js';
+import { canCollapseEdge, collapseCheckedEdge } from '../edits/collapse.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { CollapseQueue } from './queue.js';
 import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError } from './quadric.js';
@@ -132,7 +132,7 @@ export class Decimator {
       }
 
       // collapse: a survives at the planned point and stands for the planes of both ends
-      const { removed } = collapseEdge(mesh, e, placeAtPoint);
+      const { removed } = collapseCheckedEdge(mesh, e, placeAtPoint);
       for (let k = 0; k < QUADRIC_SIZE; k++) q[QUADRIC_SIZE * a + k] += q[QUADRIC_SIZE * b + k];
       this.onBoundary[a] |= this.onBoundary[b];
       this.collapsedSinceFill++;
