@@ -1,7 +1,7 @@
 import type { Page } from '@playwright/test';
 
-/** Opens the app (optionally on a sample model) and waits for the first mesh. */
-export async function openApp(page: Page, model?: string): Promise<void> {
+/** Opens the app (optionally on a sample model, optionally from another server) and waits for the first mesh. */
+export async function openApp(page: Page, model?: string, origin = ''): Promise<void> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   page.on('console', (message) => {
@@ -9,7 +9,7 @@ export async function openApp(page: Page, model?: string): Promise<void> {
     if (message.type() === 'error' && !message.text().includes('favicon')) errors.push(message.text());
   });
   (page as Page & { appErrors?: string[] }).appErrors = errors;
-  await page.goto(model ? `/?model=${encodeURIComponent(model)}` : '/');
+  await page.goto(`${origin}/${model ? `?model=${encodeURIComponent(model)}` : ''}`);
   await page.waitForFunction(() => window.halfedgeLab !== undefined);
   await page.evaluate(() => window.halfedgeLab.ready);
 }
@@ -18,10 +18,20 @@ export function appErrors(page: Page): string[] {
   return (page as Page & { appErrors?: string[] }).appErrors ?? [];
 }
 
-/** Clicks the canvas at a point given relative to it. */
+/** Whether a point (relative to the canvas) shows the canvas itself, with no panel over it. */
+export async function onCanvas(page: Page, x: number, y: number): Promise<boolean> {
+  return page.evaluate(([x, y]) => {
+    const canvas = document.querySelector('#viewport canvas')!;
+    const box = canvas.getBoundingClientRect();
+    return document.elementFromPoint(box.left + x!, box.top + y!) === canvas;
+  }, [x, y]);
+}
+
+/** Clicks the canvas at a point given relative to it; a panel over that point fails the test plainly. */
 export async function clickCanvas(page: Page, x: number, y: number): Promise<void> {
   const box = await page.locator('#viewport canvas').boundingBox();
   if (!box) throw new Error('no canvas');
+  if (!(await onCanvas(page, x, y))) throw new Error(`something covers the canvas at ${x}, ${y}`);
   await page.mouse.click(box.x + x, box.y + y);
 }
 

@@ -1,9 +1,17 @@
-// Keeps the app usable offline once it has been loaded: every same-origin GET is answered from
-// the network when there is one (and the answer kept), and from what was kept when there is not.
-// Nothing is sent anywhere: meshes opened from disk never go through here at all.
+// Keeps the app usable offline once it has been loaded. On install it keeps every file of the
+// built site (offline.json lists them), so the first visit is enough; after that each same-origin
+// GET is answered from the network when there is one (and the answer kept, so the copy stays
+// fresh), and from what was kept when there is not. Meshes opened from disk never go through here.
 const CACHE = 'halfedge-lab';
 
-self.addEventListener('install', () => self.skipWaiting());
+self.addEventListener('install', (event) => {
+  event.waitUntil(
+    fetch('offline.json')
+      .then((response) => response.json())
+      .then((files) => caches.open(CACHE).then((cache) => cache.addAll(files)))
+      .then(() => self.skipWaiting()),
+  );
+});
 self.addEventListener('activate', (event) => event.waitUntil(self.clients.claim()));
 
 self.addEventListener('fetch', (event) => {
@@ -18,7 +26,7 @@ self.addEventListener('fetch', (event) => {
         }
         return response;
       })
-      // ignoreVary: a file kept from the page's own request (no Origin header) answers a module request (with one)
+      // ignoreVary: a file kept from this worker's own request (no Origin header) answers a module request (with one)
       .catch(() => caches.match(request, { ignoreSearch: true, ignoreVary: true }).then((kept) => kept ?? Response.error())),
   );
 });
