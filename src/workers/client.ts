@@ -54,7 +54,10 @@ interface LiveWorker<T> {
 
 export class SessionClient {
   onProgress: ((event: ProgressEvent) => void) | null = null;
-  /** Called after the session worker died and was restarted with `snapshot`. */
+  /**
+   * Called after the session worker died: restarted with `snapshot` (null if there was no mesh yet),
+   * or, when it died before it ever answered (its script could not load), not restarted at all.
+   */
   onRestart: ((message: string, snapshot: Snapshot | null) => void) | null = null;
 
   private session: LiveWorker<SessionApi>;
@@ -152,11 +155,15 @@ export class SessionClient {
     const session = live<SessionApi>(this.createSessionWorker(), () =>
       new WorkerStoppedError('the editing worker stopped (most likely it ran out of memory)'),
     );
+    // a worker that never answered could not even load: starting it again would fail the same way, forever
+    let answered = false;
     session.stopped.catch((error: Error) => {
       session.worker.terminate();
-      if (this.session === session) void this.recover(error.message);
+      if (this.session !== session) return;
+      if (answered) void this.recover(error.message);
+      else this.onRestart?.('the editing worker could not start; reload the page to try again', null);
     });
-    void session.remote.setProgressListener(proxy((event: ProgressEvent) => this.onProgress?.(event)));
+    void session.remote.setProgressListener(proxy((event: ProgressEvent) => this.onProgress?.(event))).then(() => (answered = true));
     return session;
   }
 
