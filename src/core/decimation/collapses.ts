@@ -20,21 +20,15 @@
  * and, should the queue run dry before the target, every edge gets one more chance (as long as
  * the round before collapsed something).
  */
-import { canCollapseEdge, collapseCheckedEdge } from '../edits/collapse.js';
+import { canCollapseEdge, collapseEdgeAt } from '../edits/collapse.js';
+import { PointerWriter } from '../edits/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
+import type { ElementIds } from '../operation.js';
 import { CollapseQueue } from './queue.js';
 import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError } from './quadric.js';
 
 /** Weight of a boundary edge's constraint plane, per unit of the edge's squared length. */
 const BOUNDARY_WEIGHT = 1000;
-
-/** Ids the collapses of one batch removed, and the vertices that survived them. */
-export interface BatchLists {
-  vertices: number[];
-  edges: number[];
-  faces: number[];
-  survivors: number[];
-}
 
 export class Decimator {
   readonly mesh: HalfedgeMesh;
@@ -90,13 +84,14 @@ export class Decimator {
 
   /**
    * Collapses the cheapest allowed edges until the mesh has at most `faceGoal` faces or nothing
-   * allowed is left; lists what it removed and kept into `lists` when given.
+   * allowed is left. When `survivors` is given, lists the vertex that survived each collapse into
+   * it and returns the ids of what the batch removed; else returns no ids.
    */
-  collapseUntil(faceGoal: number, lists: BatchLists | null): void {
+  collapseUntil(faceGoal: number, survivors: number[] | null): ElementIds {
     const { mesh, queue, queued, quadrics: q, point } = this;
     const { heVertex, hePrev, vHalfedge, eDeleted } = mesh; // a collapse never reallocates them
-    // in bulk: no change list, and the removed ids only when the batch lists them
-    const placeAtPoint = { record: false, ids: lists !== null, position: point };
+    // one writer for the whole batch: no change list, and the removed ids only when listing
+    const w = new PointerWriter(mesh, { record: false, ids: survivors !== null });
     while (mesh.nFaces > faceGoal && !this.exhausted) {
       // the queue ran dry: once more with every edge, if a collapse may have freed a refused one
       if (queue.size === 0) {
@@ -132,16 +127,11 @@ export class Decimator {
       }
 
       // collapse: a survives at the planned point and stands for the planes of both ends
-      const { removed } = collapseCheckedEdge(mesh, e, placeAtPoint);
+      collapseEdgeAt(w, e, point);
       for (let k = 0; k < QUADRIC_SIZE; k++) q[QUADRIC_SIZE * a + k] += q[QUADRIC_SIZE * b + k];
       this.onBoundary[a] |= this.onBoundary[b];
       this.collapsedSinceFill++;
-      if (lists) {
-        lists.vertices.push(...(removed.vertices ?? []));
-        lists.edges.push(...(removed.edges ?? []));
-        lists.faces.push(...(removed.faces ?? []));
-        lists.survivors.push(a);
-      }
+      survivors?.push(a);
 
       // the survivor's edges that are queued keep their entries (now lower bounds); the others
       // (refused before, or too costly) get a new chance, as the neighbourhood has changed
@@ -159,6 +149,7 @@ export class Decimator {
         h = hePrev[h] ^ 1;
       } while (h !== start);
     }
+    return w.result().removed;
   }
 
   /** For each vertex slot, the cost of the cheapest collapse of its edges as planned now (NaN: none). */

@@ -40,9 +40,9 @@
  */
 import { InvalidInputError, TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import type { Operation, Phase } from '../operation.js';
+import type { ElementIds, Operation, Phase } from '../operation.js';
 import { needsTriangles } from '../triangles.js';
-import { type BatchLists, Decimator } from './collapses.js';
+import { Decimator } from './collapses.js';
 
 export interface DecimationOptions {
   /**
@@ -121,23 +121,23 @@ function* decimationPhases(mesh: HalfedgeMesh, settings: DecimationSettings, lis
   while (mesh.nFaces > targetFaces && !decimator.exhausted) {
     const before = mesh.nFaces;
     const goal = Math.max(targetFaces, before - Math.max(1, Math.floor(batchFraction * before)));
-    const lists: BatchLists | null = listIds ? { vertices: [], edges: [], faces: [], survivors: [] } : null;
-    decimator.collapseUntil(goal, lists);
+    const survivors = listIds ? [] : null;
+    const removed = decimator.collapseUntil(goal, survivors);
     if (mesh.nFaces === before) break;
     yield {
       name: `collapse ${before - mesh.nFaces} faces (${mesh.nFaces} left)`,
       explanation:
         'The cheapest edges in the queue collapse one by one, each merging its two ends into one vertex at its best point; the survivor sums both quadrics, and the edges around it get new costs. ' +
         'A collapse that would make the surface non-manifold (the link condition) or turn a triangle over is skipped, so the mesh stays a valid surface.',
-      ...(lists ? batchIds(mesh, lists, decimator) : {}),
+      ...(survivors ? batchIds(mesh, removed, survivors, decimator) : {}),
     };
   }
 }
 
 /** A batch's phase fields: what it removed, the survivors it moved and rewired, the new costs. */
-function batchIds(mesh: HalfedgeMesh, lists: BatchLists, decimator: Decimator): Partial<Phase> {
+function batchIds(mesh: HalfedgeMesh, removed: ElementIds, survivorList: number[], decimator: Decimator): Partial<Phase> {
   // survivors that a later collapse of the batch did not take in turn
-  const survivors = Int32Array.from(new Set(lists.survivors)).filter((v) => !mesh.vDeleted[v]).sort();
+  const survivors = Int32Array.from(new Set(survivorList)).filter((v) => !mesh.vDeleted[v]).sort();
   const halfedges: number[] = [];
   for (const v of survivors) {
     const start = mesh.vHalfedge[v];
@@ -148,7 +148,7 @@ function batchIds(mesh: HalfedgeMesh, lists: BatchLists, decimator: Decimator): 
     } while (h !== start);
   }
   return {
-    removed: { vertices: Int32Array.from(lists.vertices), edges: Int32Array.from(lists.edges), faces: Int32Array.from(lists.faces) },
+    removed,
     moved: { vertices: survivors },
     rewired: { vertices: survivors.slice(), halfedges: Int32Array.from(halfedges) },
     values: { vertices: decimator.cheapestCollapses() },

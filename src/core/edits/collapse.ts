@@ -30,7 +30,7 @@
  * The work is O(valence of a and b): one rotation around b to re-point its halfedges, a few
  * relinks, and a rotation around a to choose its handle; the check compares the two one-rings
  * (a few dozen comparisons at the usual valence 6). Pass `{ record: false }` when collapsing in
- * bulk (decimation).
+ * bulk; decimation calls `collapseEdgeAt` with one writer for a whole batch.
  */
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
@@ -73,7 +73,7 @@ export function canCollapseEdge(mesh: HalfedgeMesh, e: number): string | null {
   if (c !== -1 && c === d) {
     return `the triangles beside e${e} (f${f0}, f${f1}) have the same three corners: collapsing e${e} would leave nothing of them`;
   }
-  for (const g of [h, t]) {
+  for (let g = h; g <= t; g++) {
     if ((g === h ? c : d) !== -1 && heFace[heNext[g] ^ 1] === -1 && heFace[hePrev[g] ^ 1] === -1) {
       return `the other two edges of f${heFace[g]} are both on the boundary: collapsing e${e} would leave them as one dangling edge`;
     }
@@ -132,15 +132,18 @@ export function canCollapseEdge(mesh: HalfedgeMesh, e: number): string | null {
 export function collapseEdge(mesh: HalfedgeMesh, e: number, options: CollapseOptions = {}): VertexEditResult {
   const why = canCollapseEdge(mesh, e);
   if (why) throw new TopologyError(`collapseEdge: ${why}`);
-  return collapseCheckedEdge(mesh, e, options);
+  const w = new PointerWriter(mesh, options);
+  const vertex = collapseEdgeAt(w, e, options.position ?? null);
+  return { ...w.result(), vertex };
 }
 
 /**
- * `collapseEdge` for a caller that has just asked `canCollapseEdge` (decimation, a million times
- * over): the same collapse, without asking again.
+ * The collapse itself, through a caller's writer, for a caller that has just asked
+ * `canCollapseEdge` (decimation, a million times over, with one writer per batch). `position`
+ * null leaves a at the midpoint. Returns a, the survivor.
  */
-export function collapseCheckedEdge(mesh: HalfedgeMesh, e: number, options: CollapseOptions = {}): VertexEditResult {
-  const w = new PointerWriter(mesh, options);
+export function collapseEdgeAt(w: PointerWriter, e: number, position: ArrayLike<number> | null): number {
+  const mesh = w.mesh;
   const { heNext, hePrev, heVertex, heFace, vHalfedge } = mesh; // a collapse never grows the arrays
   const h = 2 * e;
   const t = h + 1;
@@ -157,7 +160,7 @@ export function collapseCheckedEdge(mesh: HalfedgeMesh, e: number, options: Coll
   ends[0] = a;
   ends[1] = b;
   mesh.vertexAttributes.blend(a, ends, halves);
-  if (options.position) mesh.setPosition(a, options.position[0], options.position[1], options.position[2]);
+  if (position) mesh.setPosition(a, position[0], position[1], position[2]);
 
   // everything that left b now leaves a
   let x = hePrev[t] ^ 1;
@@ -186,7 +189,7 @@ export function collapseCheckedEdge(mesh: HalfedgeMesh, e: number, options: Coll
   } while (x !== survivor && boundary === -1);
   if (boundary !== -1) w.setVertexHalfedge(a, boundary);
   else if (mesh.eDeleted[vHalfedge[a] >> 1]) w.setVertexHalfedge(a, survivor);
-  return { ...w.result(), vertex: a };
+  return a;
 }
 
 /**
@@ -201,12 +204,10 @@ function replaceParallel(w: PointerWriter, gone: number, kept: number): void {
   w.link(kept, heNext[gone]);
   w.setFace(kept, f);
   if (f !== -1 && fHalfedge[f] === gone) w.setFaceHalfedge(f, kept);
-  for (const [dead, alive] of [
-    [gone, kept],
-    [gone ^ 1, kept ^ 1],
-  ]) {
-    if (vHalfedge[heVertex[dead]] === dead) w.setVertexHalfedge(heVertex[dead], alive);
-  }
+  // a vertex whose handle was gone (or its twin) takes kept (or its twin)
+  const goneTwin = gone ^ 1;
+  if (vHalfedge[heVertex[gone]] === gone) w.setVertexHalfedge(heVertex[gone], kept);
+  if (vHalfedge[heVertex[goneTwin]] === goneTwin) w.setVertexHalfedge(heVertex[goneTwin], kept ^ 1);
   w.deleteEdge(gone >> 1);
 }
 
