@@ -95,6 +95,18 @@ test.describe('the classroom', () => {
     expect(Math.abs(here.x - there.x) + Math.abs(here.y - there.y)).toBeLessThan(2);
   });
 
+  test('a link naming a sample that is not here opens the first sample and says so', async ({ page }) => {
+    await openApp(page, 'no-such-model.ply'); // resolves only once a mesh is drawn
+    const { samples, state } = await page.evaluate(async () => ({
+      samples: (await (await fetch('models/index.json')).json()) as Array<{ file: string }>,
+      state: window.halfedgeLab.state(),
+    }));
+    expect(state.file?.name).toBe(samples[0].file);
+    expect(state.stats?.faces).toBeGreaterThan(0);
+    expect(state.message).toContain('no-such-model.ply');
+    await expect(page.getByRole('alert').filter({ hasText: 'no-such-model.ply' })).toBeVisible();
+  });
+
   test('opens a file dropped anywhere on the page', async ({ page }) => {
     await openApp(page, 'tetrahedron.off');
     const text = new TextDecoder().decode(writeSoup(cube(), 'off'));

@@ -166,6 +166,11 @@ export class App {
   }
 
   async openSample(file: string): Promise<boolean> {
+    // the list is what exists: a server may answer any other name with its index page
+    if (this.samples.length > 0 && !this.samples.some((s) => s.file === file)) {
+      this.say(`There is no sample called ${file}.`, 'alert');
+      return false;
+    }
     const url = `${import.meta.env.BASE_URL}models/${encodeURIComponent(file)}`;
     const response = await fetch(url);
     if (!response.ok) {

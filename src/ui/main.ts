@@ -7,11 +7,21 @@ import { decodeViewState } from './share.js';
 const app = new App();
 window.halfedgeLab = automation(app);
 
-/** Opens the model a link names (or the first sample), then its selection and camera. */
+/**
+ * Opens the model a link names, then its selection and camera; or the first sample, when the link
+ * names none or one that is not here (a typo, a sample since renamed): the page is never empty.
+ */
 async function openFirstModel(): Promise<void> {
   const state = decodeViewState(location.search);
   await app.loadSampleList();
-  if (await app.openSample(state.model ?? app.samples[0]?.file ?? 'tetrahedron.off')) app.applyViewState(state);
+  const first = app.samples[0]?.file ?? 'tetrahedron.off';
+  if (!state.model) {
+    await app.openSample(first);
+  } else if (await app.openSample(state.model)) {
+    app.applyViewState(state);
+  } else if (await app.openSample(first)) {
+    app.say(`This link names a sample that is not here (${state.model}), so ${first} is open instead.`, 'alert');
+  }
 }
 
 void openFirstModel().then(() => {
