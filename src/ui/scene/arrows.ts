@@ -10,9 +10,7 @@ import {
   Float32BufferAttribute,
   Group,
   InstancedMesh,
-  Matrix4,
   MeshBasicMaterial,
-  Vector3,
 } from 'three';
 import type { HalfedgeMesh } from '../../core/index.js';
 import { colors } from '../colors.js';
@@ -42,53 +40,98 @@ export function arrowShape(dashes: number): BufferGeometry {
 const interiorShape = arrowShape(1);
 const boundaryShape = arrowShape(3);
 
-/** The matrix that maps the unit arrow onto a placement. */
-export function arrowMatrix(placement: ArrowPlacement, out: Matrix4, widthScale = 1): Matrix4 {
-  const start = new Vector3(...placement.start);
-  const along = new Vector3(...placement.end).sub(start);
-  const normal = new Vector3(...placement.normal);
-  const across = new Vector3().crossVectors(normal, along).normalize().multiplyScalar(placement.width * widthScale);
-  return out.makeBasis(along, across, normal.multiplyScalar(placement.width)).setPosition(start);
+/**
+ * Writes the matrix that maps the unit arrow onto a placement into `out` at `offset` (column-major,
+ * as three.js keeps it): straight into an instanced mesh's matrix array, as a hundred thousand
+ * arrows must not make a hundred thousand matrices.
+ */
+export function writeArrowMatrix(placement: ArrowPlacement, out: { [index: number]: number }, offset: number, widthScale = 1): void {
+  const { start, end, normal, width } = placement;
+  const ax = end[0] - start[0];
+  const ay = end[1] - start[1];
+  const az = end[2] - start[2];
+  // across = normal × along, scaled to the arrow's width
+  const cx = normal[1] * az - normal[2] * ay;
+  const cy = normal[2] * ax - normal[0] * az;
+  const cz = normal[0] * ay - normal[1] * ax;
+  const across = (width * widthScale) / (Math.hypot(cx, cy, cz) || 1);
+  const o = offset;
+  // columns: along, across, normal × width, start
+  out[o] = ax;
+  out[o + 1] = ay;
+  out[o + 2] = az;
+  out[o + 3] = 0;
+  out[o + 4] = cx * across;
+  out[o + 5] = cy * across;
+  out[o + 6] = cz * across;
+  out[o + 7] = 0;
+  out[o + 8] = normal[0] * width;
+  out[o + 9] = normal[1] * width;
+  out[o + 10] = normal[2] * width;
+  out[o + 11] = 0;
+  out[o + 12] = start[0];
+  out[o + 13] = start[1];
+  out[o + 14] = start[2];
+  out[o + 15] = 1;
 }
 
 export class ArrowLayer {
   readonly group = new Group();
   /** Halfedges drawn (all of them, or those near the focus). */
   shown: Int32Array = new Int32Array(0);
-  private readonly interiorMaterial = new MeshBasicMaterial({ color: colors.halfedge, side: DoubleSide });
-  private readonly boundaryMaterial = new MeshBasicMaterial({ color: colors.boundary, side: DoubleSide });
+  private interior = arrowInstances(interiorShape, new MeshBasicMaterial({ color: colors.halfedge, side: DoubleSide }), 0);
+  private boundary = arrowInstances(boundaryShape, new MeshBasicMaterial({ color: colors.boundary, side: DoubleSide }), 0);
+
+  constructor() {
+    this.group.add(this.interior, this.boundary);
+  }
 
   /** Draws the arrows of `halfedges` (every live halfedge when null). */
   update(mesh: HalfedgeMesh, halfedges: Int32Array | null, scale: number): void {
-    this.dispose();
     this.shown = halfedges ?? liveHalfedges(mesh);
     let boundaryCount = 0;
     for (const h of this.shown) if (mesh.heFace[h] === -1) boundaryCount++;
-    const interior = new InstancedMesh(interiorShape, this.interiorMaterial, this.shown.length - boundaryCount);
-    const boundary = new InstancedMesh(boundaryShape, this.boundaryMaterial, boundaryCount);
+    const interior = (this.interior = this.withRoom(this.interior, this.shown.length - boundaryCount));
+    const boundary = (this.boundary = this.withRoom(this.boundary, boundaryCount));
     const placement = newPlacement();
-    const matrix = new Matrix4();
     let i = 0;
     let b = 0;
     for (const h of this.shown) {
-      arrowMatrix(placeArrow(mesh, h, placement, scale), matrix);
-      if (placement.boundary) boundary.setMatrixAt(b++, matrix);
-      else interior.setMatrixAt(i++, matrix);
+      placeArrow(mesh, h, placement, scale);
+      if (placement.boundary) writeArrowMatrix(placement, boundary.instanceMatrix.array, 16 * b++);
+      else writeArrowMatrix(placement, interior.instanceMatrix.array, 16 * i++);
     }
     for (const arrows of [interior, boundary]) {
+      arrows.instanceMatrix.clearUpdateRanges();
+      arrows.instanceMatrix.addUpdateRange(0, 16 * arrows.count);
       arrows.instanceMatrix.needsUpdate = true;
-      arrows.computeBoundingSphere();
-      arrows.raycast = () => {}; // picking measures distances to arrows itself
     }
-    this.group.add(interior, boundary);
   }
 
-  private dispose(): void {
-    for (const child of [...this.group.children]) {
-      (child as InstancedMesh).dispose();
-      this.group.remove(child);
+  /**
+   * `arrows` with `count` instances in use: the same object while it has room for them, as a new
+   * one costs a loop that sets every instance to the identity and a fresh buffer on the GPU.
+   */
+  private withRoom(arrows: InstancedMesh, count: number): InstancedMesh {
+    if (count > arrows.instanceMatrix.count) {
+      const larger = arrowInstances(arrows.geometry, arrows.material as MeshBasicMaterial, count);
+      this.group.remove(arrows);
+      arrows.dispose();
+      this.group.add(larger);
+      arrows = larger;
     }
+    arrows.count = count;
+    return arrows;
   }
+}
+
+function arrowInstances(shape: BufferGeometry, material: MeshBasicMaterial, capacity: number): InstancedMesh {
+  const arrows = new InstancedMesh(shape, material, capacity);
+  // the arrows lie on the mesh, which is what the camera frames: no culling, so no bounding
+  // sphere to compute over every instance
+  arrows.frustumCulled = false;
+  arrows.raycast = () => {}; // picking measures distances to arrows itself
+  return arrows;
 }
 
 export function liveHalfedges(mesh: HalfedgeMesh): Int32Array {

@@ -12,7 +12,6 @@ import {
   InstancedMesh,
   LineBasicMaterial,
   LineSegments,
-  Matrix4,
   Mesh,
   MeshBasicMaterial,
   Points,
@@ -21,7 +20,7 @@ import {
 import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import type { HalfedgeMesh } from '../../core/index.js';
 import { newPlacement, placeArrow } from './arrow-placement.js';
-import { arrowMatrix, arrowShape } from './arrows.js';
+import { arrowShape, writeArrowMatrix } from './arrows.js';
 
 export interface HighlightSpec {
   halfedges: Array<{ id: number; color: string }>;
@@ -69,10 +68,8 @@ export class HighlightLayer {
         spec.halfedges.length,
       );
       const placement = newPlacement();
-      const matrix = new Matrix4();
       spec.halfedges.forEach(({ id, color }, i) => {
-        arrowMatrix(placeArrow(mesh, id, placement, scale), matrix, this.widthScale);
-        arrows.setMatrixAt(i, matrix);
+        writeArrowMatrix(placeArrow(mesh, id, placement, scale), arrows.instanceMatrix.array, 16 * i, this.widthScale);
         arrows.setColorAt(i, new Color(color));
       });
       arrows.renderOrder = 2;
