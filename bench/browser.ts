@@ -73,6 +73,8 @@ try {
   writeFileSync(medium, writeSoup(sphereWithFaces(250_000), 'ply-binary'));
   await page.locator('#file-input').setInputFiles(medium);
   await page.waitForFunction(() => window.halfedgeLab.state().file?.name === 'sphere-250k.ply' && window.halfedgeLab.state().drawnAt > window.halfedgeLab.state().shownAt);
+  // let the load's follow-up work (arrows, the picking worker's copy) finish: it is not the step's
+  await page.waitForTimeout(1500);
   await page.evaluate(() => window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' }));
   await measure(page, 'loop-step-250k-to-drawn', 250_000, async () => {
     await page.evaluate(() => void window.halfedgeLab.runToEnd());
@@ -105,15 +107,17 @@ async function measure(page: import('@playwright/test').Page, name: string, size
     const s = window.halfedgeLab.state();
     return { shownAt: s.shownAt, drawnAt: s.drawnAt, tasks: (window as unknown as { longTasks: Array<{ start: number; duration: number }> }).longTasks };
   });
-  // the task that handles the arriving snapshot ends after it is shown: it is the drawing's, not the wait's
-  const during = after.tasks.filter((t) => t.start + t.duration < after.shownAt);
+  // a task that began before the action is an earlier one's (its entry can arrive late); the task
+  // that handles the arriving snapshot ends after it is shown: it is the drawing's, not the wait's
+  const tasks = after.tasks.filter((t) => t.start >= before.t);
+  const during = tasks.filter((t) => t.start + t.duration < after.shownAt);
   const longest = (tasks: Array<{ duration: number }>) => Math.round(Math.max(0, ...tasks.map((t) => t.duration)));
   report({
     case: name,
     size,
     ms: Math.round(after.drawnAt - before.t),
     longestTaskWhileWorkerWorksMs: longest(during),
-    longestTaskOverallMs: longest(after.tasks),
+    longestTaskOverallMs: longest(tasks),
     limitLongestTaskMs: 100,
   });
 }
