@@ -79,6 +79,32 @@ test.describe('the classroom', () => {
     await expect(page.getByRole('dialog', { name: 'Keys' })).toBeHidden();
   });
 
+  test('on a 1024 × 768 projector, presentation mode fits the screen and leaves most of it to the mesh', async ({ page }, testInfo) => {
+    await page.setViewportSize({ width: 1024, height: 768 });
+    await openApp(page, 'disk.off');
+    await page.evaluate(() => window.halfedgeLab.select('h7'));
+    await page.keyboard.press('m');
+    await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', 'true');
+    const layout = await page.evaluate(() => {
+      const box = (selector: string) => document.querySelector(selector)!.getBoundingClientRect();
+      const side = box('.side');
+      // what sticks out of its panel, sideways: walk buttons, tabs, table cells
+      const outside = [...document.querySelectorAll('.side button, .side [role="tab"]')]
+        .map((node) => [node.textContent, node.getBoundingClientRect()] as const)
+        .filter(([, r]) => r.width > 0 && (r.left < side.left - 1 || r.right > side.right + 1))
+        .map(([text]) => text);
+      const tables = box('.tables');
+      const wideCells = [...document.querySelectorAll('.tables .table-row > *')].filter((node) => node.getBoundingClientRect().right > tables.right + 1).length;
+      return { page: document.documentElement.scrollHeight, stage: box('.stage'), outside, wideCells };
+    });
+    await page.screenshot({ path: testInfo.outputPath('projector.png') });
+    expect(layout.page).toBeLessThanOrEqual(768); // no page scrolling: the panels scroll inside
+    expect(layout.outside).toEqual([]);
+    expect(layout.wideCells).toBe(0);
+    expect(layout.stage.width).toBeGreaterThan(0.6 * 1024);
+    expect(layout.stage.height).toBeGreaterThan(0.5 * 768);
+  });
+
   test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
     await openApp(page, 'torus.off');
     await page.evaluate(() => window.halfedgeLab.select('h42'));

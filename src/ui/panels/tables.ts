@@ -32,7 +32,7 @@ export const tableSpecs: TableSpec[] = [
   {
     kind: 'vertex',
     title: 'Vertices',
-    widths: '7rem minmax(18rem, 2fr) 1fr',
+    widths: 'minmax(0, 1fr) minmax(0, 3fr) minmax(0, 1.2fr)',
     columns: () => ['vertex', 'coordinates', 'incident halfedge'],
     count: (mesh) => mesh.vertexSlots,
     row: (mesh, id) => [elementName({ kind: 'vertex', id }), `(${mesh.position(id).map(round).join(', ')})`, h(mesh.vHalfedge[id])] as Array<string | Selection>,
@@ -40,7 +40,7 @@ export const tableSpecs: TableSpec[] = [
   {
     kind: 'face',
     title: 'Faces',
-    widths: '7rem 8rem 1fr',
+    widths: 'repeat(3, minmax(0, 1fr))',
     columns: () => ['face', 'halfedge', 'sides'],
     count: (mesh) => mesh.faceSlots,
     row: (mesh, id) => [elementName({ kind: 'face', id }), h(mesh.fHalfedge[id]), String(mesh.faceDegree(id))] as Array<string | Selection>,
@@ -48,7 +48,7 @@ export const tableSpecs: TableSpec[] = [
   {
     kind: 'halfedge',
     title: 'Halfedges',
-    widths: 'repeat(7, minmax(5rem, 1fr))',
+    widths: 'repeat(7, minmax(0, 1fr))',
     columns: (convention) => ['halfedge', convention, 'twin', 'face', 'next', 'prev', 'edge'],
     count: (mesh) => mesh.halfedgeSlots,
     row: (mesh, id, convention) =>
