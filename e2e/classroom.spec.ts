@@ -121,7 +121,7 @@ test.describe('the classroom', () => {
     expect(Math.abs(here.x - there.x) + Math.abs(here.y - there.y)).toBeLessThan(2);
   });
 
-  test('a link naming a sample that is not here opens the first sample and says so', async ({ page }) => {
+  test('a link naming a sample or an element that is not here opens what it can and says what is missing', async ({ page }) => {
     await openApp(page, 'no-such-model.ply'); // resolves only once a mesh is drawn
     const { samples, state } = await page.evaluate(async () => ({
       samples: (await (await fetch('models/index.json')).json()) as Array<{ file: string }>,
@@ -131,6 +131,13 @@ test.describe('the classroom', () => {
     expect(state.stats?.faces).toBeGreaterThan(0);
     expect(state.message).toContain('no-such-model.ply');
     await expect(page.getByRole('alert').filter({ hasText: 'no-such-model.ply' })).toBeVisible();
+
+    // a selection the model does not have: the model opens, and the page says what is missing
+    await page.goto('/?model=tetrahedron.off&select=h999');
+    await page.waitForFunction(() => window.halfedgeLab !== undefined);
+    await page.evaluate(() => window.halfedgeLab.ready);
+    await expect(page.getByRole('alert').filter({ hasText: 'h999' })).toContainText('tetrahedron.off does not have');
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBeNull();
   });
 
   test('opens a file dropped anywhere on the page', async ({ page }) => {

@@ -345,7 +345,10 @@ export class App {
       this.frameMesh();
     }
     if (state.camera) this.viewer.setCamera(state.camera.position, state.camera.target, state.camera.zoom);
-    if (state.selection && this.mesh && exists(this.mesh, state.selection)) this.select(state.selection);
+    if (state.selection && this.mesh) {
+      if (exists(this.mesh, state.selection)) this.select(state.selection);
+      else this.say(`This link selects ${elementName(state.selection)}, which ${this.snapshot?.file?.name ?? 'this mesh'} does not have.`, 'alert');
+    }
   }
 
   shareLink(): string {
