@@ -44,6 +44,13 @@ export interface LoadedFile {
   file: FileInfo;
 }
 
+/**
+ * Above this many triangles the page picks through a worker holding a bounding-volume hierarchy
+ * (built while the mesh is on screen); up to it, the page tests a ray against each triangle (a few
+ * milliseconds).
+ */
+export const PICK_IN_WORKER_ABOVE = 150_000;
+
 /** What the page draws, ready to upload: so the page's thread only hands buffers to the GPU. */
 export interface RenderBuffers {
   /** x, y, z of every vertex slot, as float32. */
@@ -58,6 +65,12 @@ export interface RenderBuffers {
   vertices: Uint32Array;
   /** The normal of the plane every face lies in, for a 2D mesh; null for a 3D one. */
   planeNormal: [number, number, number] | null;
+  /**
+   * Copies of `positions` and `triangles` for the picking worker (the page draws from the
+   * originals), made here so that the page only passes them on; null up to PICK_IN_WORKER_ABOVE
+   * triangles, where the page picks by itself.
+   */
+  picking: { positions: Float32Array; triangles: Uint32Array } | null;
 }
 
 export interface HistoryItem {
@@ -136,8 +149,9 @@ export interface LoaderApi {
 export function transferables(value: Snapshot | LoadedFile): ArrayBuffer[] {
   const buffers = meshBuffers(value.mesh);
   if ('render' in value) {
-    const { positions, triangles, triangleFace, edges, vertices } = value.render;
-    buffers.push(...[positions, triangles, triangleFace, edges, vertices].map((a) => a.buffer as ArrayBuffer));
+    const { positions, triangles, triangleFace, edges, vertices, picking } = value.render;
+    const arrays = [positions, triangles, triangleFace, edges, vertices, ...(picking ? [picking.positions, picking.triangles] : [])];
+    buffers.push(...arrays.map((a) => a.buffer as ArrayBuffer));
   }
   return buffers;
 }

@@ -7,7 +7,7 @@
 import { cannotDecimate, faceNormal, type HalfedgeMesh, meshStats, serializeMesh, validate } from '../core/index.js';
 import { cannotSmooth } from '../core/smoothing/index.js';
 import { cannotSubdivide, subdivisionSchemes } from '../core/subdivision/index.js';
-import type { RenderBuffers, Snapshot } from './protocol.js';
+import { PICK_IN_WORKER_ABOVE, type RenderBuffers, type Snapshot } from './protocol.js';
 import { triangulateFaces } from './triangulate.js';
 
 type Computed = 'mesh' | 'render' | 'stats' | 'problems' | 'unavailable';
@@ -44,12 +44,16 @@ export function renderBuffers(mesh: HalfedgeMesh): RenderBuffers {
   const vertices = new Uint32Array(mesh.nVertices);
   n = 0;
   for (let v = 0; v < mesh.vertexSlots; v++) if (!mesh.vDeleted[v]) vertices[n++] = v;
+  const positions = new Float32Array(mesh.positions.subarray(0, 3 * mesh.vertexSlots));
+  const { triangles, triangleFace } = triangulateFaces(mesh);
   return {
-    positions: new Float32Array(mesh.positions.subarray(0, 3 * mesh.vertexSlots)),
-    ...triangulateFaces(mesh),
+    positions,
+    triangles,
+    triangleFace,
     edges,
     vertices,
     planeNormal: planeNormal(mesh),
+    picking: triangles.length / 3 > PICK_IN_WORKER_ABOVE ? { positions: positions.slice(), triangles: triangles.slice() } : null,
   };
 }
 

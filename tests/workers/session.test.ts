@@ -17,7 +17,7 @@ import {
   writeSoup,
 } from '../../src/index.js';
 import { loadFile } from '../../src/workers/load.js';
-import { transferables } from '../../src/workers/protocol.js';
+import { PICK_IN_WORKER_ABOVE, transferables } from '../../src/workers/protocol.js';
 import { EditingSession } from '../../src/workers/session.js';
 
 function sessionWith(bytes: Uint8Array, name: string): EditingSession {
@@ -214,6 +214,24 @@ describe('snapshots cross the worker boundary by transfer', () => {
     // and the session still has its mesh
     expect(validate(buildMesh(cube()).mesh)).toEqual([]);
     expect(session.snapshot().mesh.heNext.length).toBe(24);
+  });
+
+  it('copies the drawing arrays for the picking worker only for a mesh past PICK_IN_WORKER_ABOVE triangles', async () => {
+    const { renderBuffers } = await import('../../src/workers/snapshot.js');
+    expect(renderBuffers(buildMesh(cube()).mesh).picking).toBeNull();
+    const big = buildMesh(uvSphere(200, 400)).mesh; // 2 · 400 · 199 triangles
+    expect(big.nFaces).toBeGreaterThan(PICK_IN_WORKER_ABOVE);
+    const render = renderBuffers(big);
+    const picking = render.picking!;
+    expect(picking.positions).toEqual(render.positions);
+    expect(picking.triangles).toEqual(render.triangles);
+    // copies, each sent on its own buffer: the page keeps drawing while the picking worker has its own
+    expect(picking.positions.buffer).not.toBe(render.positions.buffer);
+    expect(picking.triangles.buffer).not.toBe(render.triangles.buffer);
+    const snapshot = sessionWith(cubeFile(), 'cube.off').snapshot();
+    expect(transferables({ ...snapshot, render })).toEqual(
+      expect.arrayContaining([picking.positions.buffer, picking.triangles.buffer]),
+    );
   });
 });
 

@@ -29,11 +29,6 @@ import type { PickingApi } from './picking.worker.js';
 
 /** Draw vertices as dots up to this many. */
 const MAX_DOTS = 1_000;
-/**
- * Up to this many triangles a ray is tested against each of them, here (a few milliseconds);
- * beyond, a worker with a bounding-volume hierarchy answers (built while the mesh is on screen).
- */
-const PICK_HERE = 150_000;
 
 export interface SurfaceHit {
   face: number;
@@ -76,14 +71,15 @@ export class SurfaceLayer {
     this.faces.computeBoundingBox();
     this.triangleFace = render.triangleFace;
     const triangles = render.triangles.length / 3;
-    this.workerReady = triangles > PICK_HERE ? this.sendToPickingWorker(render) : null;
+    this.workerReady = render.picking ? this.sendToPickingWorker(render.picking) : null;
 
+    // the lines and dots share the positions, so their bounds too (one pass over them, not three)
     this.lines.setAttribute('position', position);
     this.lines.setIndex(new BufferAttribute(render.edges, 1));
-    this.lines.computeBoundingSphere();
+    this.lines.boundingSphere = this.faces.boundingSphere!.clone();
     this.vertices.setAttribute('position', position);
     this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
-    this.vertices.computeBoundingSphere();
+    this.vertices.boundingSphere = this.faces.boundingSphere!.clone();
     // a point set (no faces) shows its vertices however many there are
     this.dots.visible = render.vertices.length <= MAX_DOTS || triangles === 0;
   }
@@ -127,10 +123,9 @@ export class SurfaceLayer {
     (this.dots.material as PointsMaterial).size = 4 * scale;
   }
 
-  private sendToPickingWorker(render: RenderBuffers): Promise<void> {
+  /** Hands the session's copies to the picking worker (transferred: the page copies nothing). */
+  private sendToPickingWorker({ positions, triangles }: NonNullable<RenderBuffers['picking']>): Promise<void> {
     this.pickingWorker ??= wrap<PickingApi>(new Worker(new URL('./picking.worker.ts', import.meta.url), { type: 'module' }));
-    const positions = render.positions.slice();
-    const triangles = render.triangles.slice();
     return this.pickingWorker.setMesh(transfer(positions, [positions.buffer]), transfer(triangles, [triangles.buffer]));
   }
 }
