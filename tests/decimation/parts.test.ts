@@ -12,7 +12,7 @@ const SEED = 4242;
 describe('the collapse queue', () => {
   it(`pops entries in the order of a sort, pushed and heapified alike (seed ${SEED})`, () => {
     const next = seededRandom(SEED);
-    const queue = new CollapseQueue(4); // small, so it has to grow
+    const queue = new CollapseQueue(); // buckets start small, so they have to grow
     const entries: Array<[number, number]> = [];
     for (let i = 0; i < 500; i++) {
       const cost = Math.floor(next() * 100); // ties included
@@ -29,8 +29,39 @@ describe('the collapse queue', () => {
     expect(popped).toEqual(entries.map(([cost]) => cost).sort((p, q) => p - q));
   });
 
+  it(`always pops the cheapest, however pushes and pops interleave, across costs from 0 to 1e12 (seed ${SEED})`, () => {
+    const next = seededRandom(SEED);
+    const queue = new CollapseQueue();
+    const held: number[] = []; // the reference: every cost in the queue
+    const randomCost = () => (next() < 0.05 ? 0 : 10 ** (24 * next() - 12) * (1 + next()));
+    // a queue cleared after use starts afresh
+    for (let i = 0; i < 100; i++) queue.push(randomCost(), i);
+    queue.clear();
+    expect(queue.size).toBe(0);
+    for (let i = 0; i < 3000; i++) {
+      const cost = randomCost();
+      queue.append(cost, i);
+      held.push(cost);
+    }
+    queue.heapify();
+    for (let step = 0; step < 20000; step++) {
+      if (next() < 0.45 || held.length === 0) {
+        // a push, sometimes far below everything held (a newly allowed cheap edge)
+        const cost = next() < 0.1 ? randomCost() * 1e-6 : randomCost();
+        queue.push(cost, step);
+        held.push(cost);
+      } else {
+        const cheapest = Math.min(...held);
+        expect(queue.topCost).toBe(cheapest);
+        held.splice(held.indexOf(cheapest), 1);
+        queue.pop();
+      }
+      expect(queue.size).toBe(held.length);
+    }
+  });
+
   it('keeps each entry’s edge with its cost', () => {
-    const queue = new CollapseQueue(0);
+    const queue = new CollapseQueue();
     [5, 1, 4, 2, 3].forEach((cost) => queue.push(cost, 10 * cost));
     const edges: number[] = [];
     while (queue.size > 0) {

@@ -61,7 +61,7 @@ export class Decimator {
     this.onBoundary = new Uint8Array(mesh.vertexSlots);
     for (let v = 0; v < mesh.vertexSlots; v++) this.onBoundary[v] = mesh.isBoundaryVertex(v) ? 1 : 0;
     this.queued = new Uint8Array(mesh.edgeSlots);
-    this.queue = new CollapseQueue(mesh.edgeSlots);
+    this.queue = new CollapseQueue();
     this.maxSquaredError = maxError * maxError;
   }
 

@@ -1,9 +1,21 @@
 /**
- * The queue of candidate collapses: a binary min-heap of (cost, edge) entries over two typed
- * arrays, rather than one object per entry. Push and pop are O(log n); nothing is ever sorted.
+ * The queue of candidate collapses: the cheapest (cost, edge) entry first, exactly, with push and
+ * pop cheap even when the queue holds every edge of a million-triangle mesh.
  *
- * A binary heap cannot find an entry to update or remove it, so the decimation never asks it to:
- *   - lazy deletion: an entry whose edge has been deleted stays in the heap, and is skipped when
+ * Entries are filed in buckets by cost: the bucket is the cost's float32 bit pattern shifted right
+ * (BUCKET_SHIFT), so costs within about 9% of each other share one, and a costlier bucket never
+ * holds a cheaper entry. Only the lowest bucket that holds anything (the *current* one) is kept as
+ * a binary min-heap; every other bucket is a plain list, heap-ordered once, when it becomes
+ * current. So a push above the current bucket is an append, and pops sift through a heap of one
+ * bucket (thousands of entries, in cache) rather than of the whole queue (a million, out of it,
+ * where each level of a sift waits on memory).
+ * ```
+ *   bucket   …  12 (current: a heap)   13 (list)   14 (list)   …
+ *   pop  ──► the heap's top            push 0.7 ──► append to 13
+ * ```
+ *
+ * The queue cannot find an entry to update or remove it, so the decimation never asks it to:
+ *   - lazy deletion: an entry whose edge has been deleted stays in the queue, and is skipped when
  *     it comes to the top;
  *   - lazy update: a collapse makes the edges around the survivor costlier (their ends only gain
  *     planes, so the least error over all points can only grow), so their entries stay as they
@@ -20,41 +32,50 @@
  * So each edge has at most one entry, and an edge is planned again mostly when its entry reaches
  * the top.
  */
-export class CollapseQueue {
-  private costs: Float64Array;
-  private edges: Int32Array;
+
+/** Float32 bits >>> BUCKET_SHIFT: 3 mantissa bits are kept, so 8 buckets per doubling of the cost. */
+const BUCKET_SHIFT = 20;
+/** Buckets for every finite cost ≥ 0, and one more for anything above. */
+const BUCKETS = (0x7f800000 >>> BUCKET_SHIFT) + 1;
+
+const float32 = new Float32Array(1);
+const bits32 = new Uint32Array(float32.buffer);
+
+/** The bucket of a cost ≥ 0; monotone: a higher cost never gets a lower bucket. */
+function bucketOf(cost: number): number {
+  float32[0] = cost;
+  return Math.min(bits32[0] >>> BUCKET_SHIFT, BUCKETS - 1);
+}
+
+/** The entries of one bucket: a list, or a heap while the bucket is current. */
+class Bucket {
+  costs = new Float64Array(16);
+  edges = new Int32Array(16);
   size = 0;
 
-  constructor(capacity: number) {
-    this.costs = new Float64Array(Math.max(capacity, 16));
-    this.edges = new Int32Array(this.costs.length);
-  }
-
-  /** Cost and edge of the cheapest entry (read only when `size > 0`). */
-  get topCost(): number {
-    return this.costs[0];
-  }
-  get topEdge(): number {
-    return this.edges[0];
-  }
-
-  /** Appends an entry without ordering it; call `heapify` after a run of these. */
   append(cost: number, edge: number): void {
-    if (this.size === this.costs.length) this.grow();
+    if (this.size === this.costs.length) {
+      const costs = new Float64Array(2 * this.size);
+      const edges = new Int32Array(2 * this.size);
+      costs.set(this.costs);
+      edges.set(this.edges);
+      this.costs = costs;
+      this.edges = edges;
+    }
     this.costs[this.size] = cost;
     this.edges[this.size++] = edge;
   }
 
-  /** Orders appended entries into a heap, bottom up: O(n), cheaper than n pushes. */
+  /** Orders the list into a heap, bottom up: O(n). */
   heapify(): void {
     for (let i = (this.size >> 1) - 1; i >= 0; i--) this.siftDown(i, this.costs[i], this.edges[i]);
   }
 
   push(cost: number, edge: number): void {
-    if (this.size === this.costs.length) this.grow();
+    this.append(cost, edge);
     const { costs, edges } = this;
     // move parents down until the new entry's place is found
-    let i = this.size++;
+    let i = this.size - 1;
     while (i > 0) {
       const parent = (i - 1) >> 1;
       if (costs[parent] <= cost) break;
@@ -66,14 +87,9 @@ export class CollapseQueue {
     edges[i] = edge;
   }
 
-  /** Removes the cheapest entry. */
   pop(): void {
     const last = --this.size;
     if (last > 0) this.siftDown(0, this.costs[last], this.edges[last]);
-  }
-
-  clear(): void {
-    this.size = 0;
   }
 
   /** Places the entry (cost, edge) at `i` or below, moving cheaper children up. */
@@ -92,13 +108,71 @@ export class CollapseQueue {
     costs[i] = cost;
     edges[i] = edge;
   }
+}
 
-  private grow(): void {
-    const costs = new Float64Array(2 * this.costs.length);
-    const edges = new Int32Array(costs.length);
-    costs.set(this.costs);
-    edges.set(this.edges);
-    this.costs = costs;
-    this.edges = edges;
+export class CollapseQueue {
+  /** Made when first used: most costs fall in a few dozen of them. */
+  private readonly buckets: Array<Bucket | undefined> = new Array(BUCKETS);
+  /** The lowest bucket holding an entry, heap-ordered; BUCKETS when the queue is empty. */
+  private current = BUCKETS;
+  size = 0;
+
+  /** Cost and edge of the cheapest entry (read only when `size > 0`). */
+  get topCost(): number {
+    return this.buckets[this.current]!.costs[0];
+  }
+  get topEdge(): number {
+    return this.buckets[this.current]!.edges[0];
+  }
+
+  /** Appends an entry without ordering it; call `heapify` after a run of these. */
+  append(cost: number, edge: number): void {
+    this.bucket(bucketOf(cost)).append(cost, edge);
+    this.size++;
+  }
+
+  /** Orders appended entries: finds the current bucket and makes it a heap. */
+  heapify(): void {
+    this.current = 0;
+    this.advance();
+  }
+
+  push(cost: number, edge: number): void {
+    const b = bucketOf(cost);
+    const bucket = this.bucket(b);
+    if (b > this.current) bucket.append(cost, edge);
+    else {
+      // below the current bucket: that one was empty, and becomes current (the old one stays a
+      // heap, which is also a list)
+      this.current = b;
+      bucket.push(cost, edge);
+    }
+    this.size++;
+  }
+
+  /** Removes the cheapest entry. */
+  pop(): void {
+    const bucket = this.buckets[this.current]!;
+    bucket.pop();
+    this.size--;
+    if (bucket.size === 0) this.advance();
+  }
+
+  clear(): void {
+    for (const bucket of this.buckets) if (bucket) bucket.size = 0;
+    this.current = BUCKETS;
+    this.size = 0;
+  }
+
+  /** Moves `current` up to the next bucket holding an entry, and makes that one a heap. */
+  private advance(): void {
+    let b = this.current;
+    while (b < BUCKETS && !this.buckets[b]?.size) b++;
+    this.current = b;
+    if (b < BUCKETS) this.buckets[b]!.heapify();
+  }
+
+  private bucket(b: number): Bucket {
+    return (this.buckets[b] ??= new Bucket());
   }
 }
