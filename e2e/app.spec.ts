@@ -107,6 +107,43 @@ test.describe('the teaching app', () => {
     await expect(page.locator('#tables [data-element="h10000"]')).toBeVisible();
   });
 
+  test('a fine mesh shows its surface zoomed out, and its arrows around the selection zoomed in', async ({ page }, testInfo) => {
+    await openApp(page, 'bunny.ply');
+    for (let level = 0; level < 3; level++) {
+      await page.evaluate(() => window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' }));
+      await page.evaluate(() => window.halfedgeLab.runToEnd());
+    }
+    // the face in the middle of the view, its halfedge h and next(h)
+    const { width, height } = (await page.locator('#viewport canvas').boundingBox())!;
+    const face = await page.evaluate(([x, y]) => window.halfedgeLab.pickAt(x!, y!, 'face'), [width / 2, height / 2]);
+    const [h, next] = await page.evaluate((face) => {
+      const lab = window.halfedgeLab;
+      lab.select(face!);
+      lab.walk('halfedge');
+      const h = lab.state().selection!;
+      lab.walk('next');
+      const next = lab.state().selection!;
+      lab.select(h);
+      return [h, next];
+    }, face);
+    expect(await page.evaluate(() => window.halfedgeLab.state().stats!.faces)).toBeGreaterThan(200_000);
+    // zoomed out, every edge is a pixel or two: no lines or arrows, the shaded surface instead
+    await expect(page.locator('#arrow-note')).toContainText('Zoom in to see the halfedge arrows');
+    await page.screenshot({ path: testInfo.outputPath('fine-mesh-zoomed-out.png') });
+
+    await page.getByRole('button', { name: 'Frame the selection' }).click();
+    await expect(page.locator('#arrow-note')).toContainText('around the selection');
+    // the arrow of next(h) is drawn, so the spot where it is drawn picks it
+    await expect
+      .poll(async () => {
+        const at = await page.evaluate((name) => window.halfedgeLab.screenPosition(name), next);
+        return page.evaluate(([x, y]) => window.halfedgeLab.pickAt(x as number, y as number, 'halfedge'), [at.x, at.y]);
+      })
+      .toBe(next);
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe(h);
+    await page.screenshot({ path: testInfo.outputPath('fine-mesh-zoomed-in.png') });
+  });
+
   test('plays a traversal step by step, highlighting the current line of code', async ({ page }) => {
     await openApp(page, 'cube.off');
     await page.evaluate(() => window.halfedgeLab.select('f2'));

@@ -42,6 +42,9 @@ export interface SampleModel {
 
 /** Label every vertex and face when the mesh has at most this many of them. */
 const MAX_ID_LABELS = 400;
+/** Draw the edge lines while a typical edge is at least this many pixels long, the arrows this many. */
+const MIN_EDGE_PIXELS = 3;
+const MIN_ARROW_EDGE_PIXELS = 5;
 
 export class App {
   readonly client: SessionClient;
@@ -55,6 +58,10 @@ export class App {
   filter: PickFilter = 'auto';
   /** Larger arrows, dots and type in presentation mode. */
   scale = 1;
+  /** True while the arrows are hidden for being too small at this zoom (see fitDetail). */
+  private arrowsHidden = false;
+  /** Calls of refreshArrows so far: one that waited must not undo a later one. */
+  private arrowRefreshes = 0;
   showIds = false;
   /** The last message shown to the student (an error, a walk that led nowhere…). */
   message = '';
@@ -100,6 +107,7 @@ export class App {
     this.gizmo = new PlaneGizmo(this.viewer, (plane) => this.operations.setPlane(plane));
     this.viewer.add(this.gizmo.group);
     this.viewer.controls.addEventListener('end', () => this.refreshArrowsIfPartial());
+    this.viewer.beforeDraw = () => this.fitDetail();
     this.tables = new RecordTables(byId('tables'), (s) => this.select(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
       byId('traversal'),
@@ -502,18 +510,43 @@ export class App {
   private async refreshArrows(): Promise<void> {
     const mesh = this.mesh;
     if (!mesh) return;
-    const note = byId('arrow-note');
+    const call = ++this.arrowRefreshes;
     if (mesh.nHalfedges <= MAX_ARROWS) {
       this.arrows.update(mesh, null, this.scale);
-      note.hidden = true;
     } else {
+      // finding the face in the middle of the view may wait for the picking worker's hierarchy
       const focus = await this.focusFace();
-      if (mesh !== this.mesh) return; // a newer snapshot arrived meanwhile
+      if (call !== this.arrowRefreshes) return; // a later refresh (a selection, a new mesh) has run
       this.arrows.update(mesh, focus < 0 ? new Int32Array(0) : halfedgesNear(mesh, focus), this.scale);
-      note.hidden = false;
-      note.textContent = `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${this.selection ? 'selection' : 'centre of the view'}.`;
     }
+    this.showArrowNote();
     this.viewer.requestRender();
+  }
+
+  /**
+   * Before each frame: edge lines and arrows only a few pixels long blur into a dark mass that
+   * hides the surface, so they wait until the view zooms in (the selection stays highlighted).
+   */
+  private fitDetail(): void {
+    const pixels = this.surface.edgeLength * this.viewer.pixelsPerUnit();
+    this.surface.showEdges(pixels >= MIN_EDGE_PIXELS);
+    const arrowsHidden = pixels < MIN_ARROW_EDGE_PIXELS;
+    this.arrows.group.visible = !arrowsHidden;
+    if (arrowsHidden !== this.arrowsHidden) {
+      this.arrowsHidden = arrowsHidden;
+      this.showArrowNote();
+    }
+  }
+
+  /** Says which arrows are drawn when not all of them are. */
+  private showArrowNote(): void {
+    const note = byId('arrow-note');
+    const mesh = this.mesh;
+    note.hidden = !mesh || (!this.arrowsHidden && mesh.nHalfedges <= MAX_ARROWS);
+    if (!mesh || note.hidden) return;
+    note.textContent = this.arrowsHidden
+      ? `Zoom in to see the halfedge arrows: at this zoom an edge is under ${MIN_ARROW_EDGE_PIXELS} pixels long.`
+      : `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${this.selection ? 'selection' : 'centre of the view'}.`;
   }
 
   private refreshArrowsIfPartial(): void {

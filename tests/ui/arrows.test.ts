@@ -1,6 +1,6 @@
 import { Matrix4, Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { buildMesh, disk, torus } from '../../src/index.js';
+import { buildMesh, disk, grid, torus } from '../../src/index.js';
 import { newPlacement, placeArrow } from '../../src/ui/scene/arrow-placement.js';
 import { writeArrowMatrix } from '../../src/ui/scene/arrows.js';
 
@@ -27,5 +27,21 @@ describe('arrow matrices', () => {
         expect(new Vector3().crossVectors(along, corner).dot(new Vector3(...placement.normal))).toBeGreaterThan(0);
       }
     }
+  });
+});
+
+describe('the typical edge length (when to draw edges and arrows)', () => {
+  it('is the median of the edges’ lengths, sampled evenly on a large mesh', async () => {
+    const { medianEdgeLength } = await import('../../src/ui/scene/surface.js');
+    // a unit square of 2 × 2 cells cut into triangles: 12 sides of 0.5 and 4 diagonals of 0.71
+    const square = buildMesh(grid(2, 2)).mesh;
+    const positions = new Float32Array(square.positions);
+    const edges = new Uint32Array(Array.from(square.edges()).flatMap((e) => [square.heVertex[2 * e], square.heVertex[2 * e + 1]]));
+    expect(medianEdgeLength(positions, edges)).toBeCloseTo(0.5, 6);
+    expect(medianEdgeLength(positions, new Uint32Array(0))).toBe(0);
+    // a fine grid: sampled, not measured in full, yet the same answer
+    const fine = buildMesh(grid(300, 300)).mesh;
+    const fineEdges = new Uint32Array(Array.from(fine.edges()).flatMap((e) => [fine.heVertex[2 * e], fine.heVertex[2 * e + 1]]));
+    expect(medianEdgeLength(new Float32Array(fine.positions), fineEdges)).toBeCloseTo(1 / 300, 6);
   });
 });

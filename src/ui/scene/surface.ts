@@ -47,6 +47,8 @@ export class SurfaceLayer {
   /** Tests rays against both sides of every face; not drawn. */
   private readonly pickTarget = new Mesh(this.faces, new MeshBasicMaterial({ side: DoubleSide }));
   private triangleFace: Int32Array = new Int32Array(0);
+  /** The median length of a sample of the edges: how fine the mesh is. */
+  edgeLength = 0;
   private pickingWorker: Remote<PickingApi> | null = null;
   /** Resolves when the picking worker holds the current mesh; null while picking happens here. */
   private workerReady: Promise<void> | null = null;
@@ -82,6 +84,12 @@ export class SurfaceLayer {
     this.vertices.boundingSphere = this.faces.boundingSphere!.clone();
     // a point set (no faces) shows its vertices however many there are
     this.dots.visible = render.vertices.length <= MAX_DOTS || triangles === 0;
+    this.edgeLength = medianEdgeLength(render.positions, render.edges);
+  }
+
+  /** Shows or hides the edge lines (hidden where they would be denser than pixels). */
+  showEdges(on: boolean): void {
+    this.edges.visible = on;
   }
 
   /** Whether picking is quick enough to follow the pointer (hover previews). */
@@ -128,4 +136,18 @@ export class SurfaceLayer {
     this.pickingWorker ??= wrap<PickingApi>(new Worker(new URL('./picking.worker.ts', import.meta.url), { type: 'module' }));
     return this.pickingWorker.setMesh(transfer(positions, [positions.buffer]), transfer(triangles, [triangles.buffer]));
   }
+}
+
+/** The median length of up to a thousand edges spread over the list (0 with none). */
+export function medianEdgeLength(positions: Float32Array, edges: Uint32Array): number {
+  const count = edges.length / 2;
+  const step = Math.max(1, Math.floor(count / 1000));
+  const lengths: number[] = [];
+  for (let e = 0; e < count; e += step) {
+    const a = 3 * edges[2 * e];
+    const b = 3 * edges[2 * e + 1];
+    lengths.push(Math.hypot(positions[a] - positions[b], positions[a + 1] - positions[b + 1], positions[a + 2] - positions[b + 2]));
+  }
+  lengths.sort((p, q) => p - q);
+  return lengths.length ? lengths[lengths.length >> 1] : 0;
 }

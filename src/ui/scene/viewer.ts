@@ -35,6 +35,8 @@ export class Viewer {
   frames = 0;
   /** When the scene was last drawn (performance.now()). */
   lastDrawAt = 0;
+  /** Called before each draw (the app shows or hides detail for the zoom). */
+  beforeDraw: (() => void) | null = null;
   private needsRender = true;
   private readonly light = new DirectionalLight(0xffffff, 1.6);
 
@@ -157,6 +159,15 @@ export class Viewer {
     return { x: ((v.x + 1) / 2) * width, y: ((1 - v.y) / 2) * height, visible: v.z > -1 && v.z < 1 };
   }
 
+  /** How many canvas pixels one unit of length spans at the point the camera orbits. */
+  pixelsPerUnit(): number {
+    const { height } = this.size();
+    const camera = this.camera;
+    if (camera instanceof OrthographicCamera) return (height * camera.zoom) / (camera.top - camera.bottom);
+    const distance = camera.position.distanceTo(this.controls.target);
+    return height / (2 * distance * Math.tan((camera.fov * Math.PI) / 360));
+  }
+
   size(): { width: number; height: number } {
     return { width: this.container.clientWidth || 1, height: this.container.clientHeight || 1 };
   }
@@ -186,6 +197,7 @@ export class Viewer {
     this.lastDrawAt = performance.now();
     // the light follows the camera, so the side facing the student is always lit
     this.light.position.copy(this.camera.position);
+    this.beforeDraw?.();
     this.renderer.render(this.scene, this.camera);
     this.labels.render(this.scene, this.camera);
     spreadLabels(this.labels.domElement);
