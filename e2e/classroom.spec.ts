@@ -151,6 +151,10 @@ test.describe('the classroom', () => {
     }, text);
     await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('dropped-cube.off');
     expect(await page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(6);
+    // no sample is open now: the menu shows none, and a link cannot name one
+    await expect(page.getByLabel('Sample model')).toHaveValue('');
+    await page.getByRole('button', { name: 'Copy a link to this view' }).click();
+    await expect(page.locator('#status')).toContainText('without the model');
   });
 
   test('works offline once loaded', async ({ page }) => {

@@ -42,8 +42,9 @@ export interface SampleModel {
 
 /** Label every vertex and face when the mesh has at most this many of them. */
 const MAX_ID_LABELS = 400;
-/** Draw the edge lines while a typical edge is at least this many pixels long, the arrows this many. */
+/** Edge lines are drawn while a typical edge is at least this many pixels long on screen… */
 const MIN_EDGE_PIXELS = 3;
+/** …and the arrows while it is at least this many. */
 const MIN_ARROW_EDGE_PIXELS = 5;
 
 export class App {
@@ -58,6 +59,8 @@ export class App {
   filter: PickFilter = 'auto';
   /** Larger arrows, dots and type in presentation mode. */
   scale = 1;
+  /** The sample model open now, which a link can name; null for a file of the user's. */
+  private sample: string | null = null;
   /** True while the arrows are hidden for being too small at this zoom (see fitDetail). */
   private arrowsHidden = false;
   /** Calls of refreshArrows so far: one that waited must not undo a later one. */
@@ -153,15 +156,19 @@ export class App {
   // -----------------------------------------------------------------------------------------------
   // Opening meshes
 
-  async openBytes(bytes: Uint8Array, name: string): Promise<boolean> {
+  /** Opens a file's bytes; `sample` names the sample model they are (null: a file of the user's). */
+  async openBytes(bytes: Uint8Array, name: string, sample: string | null = null): Promise<boolean> {
     try {
       this.say(`Reading ${name}…`);
       const snapshot = await this.client.open(bytes, name);
+      this.sample = sample;
+      byId<HTMLSelectElement>('sample-select').value = sample ?? ''; // blank for a file of the user's
       this.show(snapshot, true);
       this.say(`Opened ${name}.`);
       return true;
     } catch (error) {
       this.hideProgress();
+      byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // the menu shows what stays open
       if (error instanceof CancelledError) this.say(`${error.message}; the previous mesh stays.`);
       else {
         this.say(`Could not open ${name}: ${(error as Error).message}. The previous mesh stays.`, 'alert');
@@ -185,9 +192,7 @@ export class App {
       this.say(`There is no sample called ${file} (${response.status}).`, 'alert');
       return false;
     }
-    const select = byId<HTMLSelectElement>('sample-select');
-    select.value = file;
-    return this.openBytes(new Uint8Array(await response.arrayBuffer()), file);
+    return this.openBytes(new Uint8Array(await response.arrayBuffer()), file, file);
   }
 
   async loadSampleList(): Promise<void> {
@@ -336,9 +341,8 @@ export class App {
   /** Model, selection and camera, for a link that restores them. */
   viewState(): ViewState {
     const camera = this.viewer.camera;
-    const model = this.samples.some((s) => s.file === this.snapshot?.file?.name) ? this.snapshot!.file!.name : null;
     return {
-      model,
+      model: this.sample,
       selection: this.selection,
       camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom },
       mode: this.viewer.mode,
@@ -528,7 +532,8 @@ export class App {
    * hides the surface, so they wait until the view zooms in (the selection stays highlighted).
    */
   private fitDetail(): void {
-    const pixels = this.surface.edgeLength * this.viewer.pixelsPerUnit();
+    // no edges (a point set), or only edges of no length: nothing that could crowd the view
+    const pixels = this.surface.edgeLength > 0 ? this.surface.edgeLength * this.viewer.pixelsPerUnit() : Infinity;
     this.surface.showEdges(pixels >= MIN_EDGE_PIXELS);
     const arrowsHidden = pixels < MIN_ARROW_EDGE_PIXELS;
     this.arrows.group.visible = !arrowsHidden;
