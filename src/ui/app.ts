@@ -4,7 +4,7 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { Box3, Vector3 } from 'three';
-import { deserializeMesh, faceCentroid, type HalfedgeMesh, meshToHalfedgeJSON, type RepairIncident } from '../core/index.js';
+import { deserializeMesh, faceCentroid, faceVectorArea, type HalfedgeMesh, meshToHalfedgeJSON, type RepairIncident } from '../core/index.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
@@ -301,7 +301,10 @@ export class App {
       box.expandByPoint(new Vector3(...mesh.position(mesh.heVertex[mesh.heNext[id]])));
     }
     box.expandByScalar(box.getSize(new Vector3()).length() * 0.6 + 1e-9);
-    this.viewer.frame(box, this.viewNormal());
+    // close up, an element facing away would be seen from inside the surface: look at its front
+    const facing = selectionFacing(mesh, s);
+    const direction = this.viewer.camera.position.clone().sub(this.viewer.controls.target);
+    this.viewer.frame(box, this.viewNormal(), undefined, facing && facing.dot(direction) < 0 ? facing : undefined);
   }
 
   /** The direction the top view looks along: the plane of a 2D mesh, else z. */
@@ -675,4 +678,25 @@ function idLabels(mesh: HalfedgeMesh): HighlightSpec {
   for (const v of mesh.vertices()) spec.labels.push({ text: `v${v}`, at: mesh.position(v) as [number, number, number], color: colors.origin });
   for (const f of mesh.faces()) spec.labels.push({ text: `f${f}`, at: faceCentroid(mesh, f) as [number, number, number], color: colors.face });
   return spec;
+}
+
+/** The way the faces at a selection face (the sum of their vector areas), or null when it has none. */
+function selectionFacing(mesh: HalfedgeMesh, s: Selection): Vector3 | null {
+  const faces: number[] = [];
+  if (s.kind === 'face') faces.push(s.id);
+  else if (s.kind === 'halfedge' || s.kind === 'edge') {
+    const h = s.kind === 'edge' ? 2 * s.id : s.id;
+    faces.push(mesh.heFace[h], mesh.heFace[h ^ 1]);
+  } else if (mesh.vHalfedge[s.id] >= 0) {
+    const start = mesh.vHalfedge[s.id];
+    let h = start;
+    do {
+      faces.push(mesh.heFace[h]);
+      h = mesh.hePrev[h] ^ 1;
+    } while (h !== start);
+  }
+  const sum = new Vector3();
+  const area = [0, 0, 0];
+  for (const f of faces) if (f >= 0) sum.add(new Vector3(...faceVectorArea(mesh, f, area)));
+  return sum.lengthSq() > 0 ? sum.normalize() : null;
 }

@@ -83,9 +83,10 @@ export class Viewer {
 
   /**
    * Points the camera at `box`. In the top view the orthographic camera looks down `normal`
-   * (the plane of a planar mesh), like the figures in a textbook.
+   * (the plane of a planar mesh), like the figures in a textbook; the perspective camera keeps
+   * the direction it looks from, or takes `from` (pointing from the box towards the camera).
    */
-  frame(box: Box3, normal: Vector3 = new Vector3(0, 0, 1), sphereRadius?: number): void {
+  frame(box: Box3, normal: Vector3 = new Vector3(0, 0, 1), sphereRadius?: number, from?: Vector3): void {
     if (box.isEmpty()) return;
     const centre = box.getCenter(new Vector3());
     // the box's half-diagonal bounds the points, but a sphere around the points is often tighter
@@ -110,7 +111,7 @@ export class Viewer {
       Object.assign(camera, { left: -half * aspect, right: half * aspect, top: half, bottom: -half, near: 0.01 * radius, far: 10 * radius, zoom: 1 });
       camera.updateProjectionMatrix();
     } else {
-      const direction = camera.position.clone().sub(this.controls.target);
+      const direction = from?.clone() ?? camera.position.clone().sub(this.controls.target);
       // a three-quarter view from the front, y up (three.js's and most scanners' convention)
       if (direction.lengthSq() === 0 || !Number.isFinite(direction.lengthSq())) direction.set(0.55, 0.45, 1);
       direction.normalize();
