@@ -4,7 +4,15 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { Box3, Vector3 } from 'three';
-import { deserializeMesh, faceCentroid, faceVectorArea, type HalfedgeMesh, meshToHalfedgeJSON, type RepairIncident } from '../core/index.js';
+import {
+  deserializeMesh,
+  faceCentroid,
+  faceVectorArea,
+  type HalfedgeMesh,
+  meshToHalfedgeJSON,
+  type RepairIncident,
+  vertexAdjacentFaces,
+} from '../core/index.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
@@ -687,14 +695,7 @@ function selectionFacing(mesh: HalfedgeMesh, s: Selection): Vector3 | null {
   else if (s.kind === 'halfedge' || s.kind === 'edge') {
     const h = s.kind === 'edge' ? 2 * s.id : s.id;
     faces.push(mesh.heFace[h], mesh.heFace[h ^ 1]);
-  } else if (mesh.vHalfedge[s.id] >= 0) {
-    const start = mesh.vHalfedge[s.id];
-    let h = start;
-    do {
-      faces.push(mesh.heFace[h]);
-      h = mesh.hePrev[h] ^ 1;
-    } while (h !== start);
-  }
+  } else faces.push(...vertexAdjacentFaces(mesh, s.id));
   const sum = new Vector3();
   const area = [0, 0, 0];
   for (const f of faces) if (f >= 0) sum.add(new Vector3(...faceVectorArea(mesh, f, area)));
