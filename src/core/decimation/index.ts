@@ -121,7 +121,7 @@ function* decimationPhases(mesh: HalfedgeMesh, settings: DecimationSettings, lis
   while (mesh.nFaces > targetFaces && !decimator.exhausted) {
     const before = mesh.nFaces;
     const goal = Math.max(targetFaces, before - Math.max(1, Math.floor(batchFraction * before)));
-    const survivors = listIds ? [] : null;
+    const survivors: number[] | null = listIds ? [] : null;
     const removed = decimator.collapseUntil(goal, survivors);
     if (mesh.nFaces === before) break;
     yield {
