@@ -21,6 +21,7 @@ export type Invariant =
   | 'isolated-vertex'
   | 'boundary-vertex-halfedge'
   | 'vertex-fan'
+  | 'parallel-edge'
   | 'cycle-closes';
 
 export interface Violation {
@@ -50,6 +51,7 @@ export function validate(mesh: HalfedgeMesh, options: ValidateOptions = {}): Vio
     if (violations.length === 0) checkCycles(mesh, fail);
     checkFaces(mesh, fail);
     checkVertices(mesh, fail);
+    checkParallelEdges(mesh, fail);
   } catch (error) {
     if (!(error instanceof TooMany)) throw error;
   }
@@ -235,6 +237,49 @@ function checkVertices(mesh: HalfedgeMesh, fail: Fail): void {
         vertices: [v],
         halfedges: [start],
       });
+    }
+  }
+}
+
+/**
+ * No two edges join the same two vertices. The pointers could hold such a pair, but no file can:
+ * a face lists its corners, not its edges, so a reader would join the two into one edge (or none)
+ * and read back a different mesh. Linear: the halfedges are bucketed by origin (a counting sort),
+ * then each vertex's targets are stamped with its id.
+ */
+function checkParallelEdges(mesh: HalfedgeMesh, fail: Fail): void {
+  const { heVertex, eDeleted } = mesh;
+  const nH = mesh.halfedgeSlots;
+  const nV = mesh.vertexSlots;
+  const inRange = (v: number) => v >= 0 && v < nV;
+  const start = new Int32Array(nV + 1);
+  for (let h = 0; h < nH; h++) {
+    if (!eDeleted[h >> 1] && inRange(heVertex[h]) && inRange(heVertex[h ^ 1])) start[heVertex[h] + 1]++;
+  }
+  for (let v = 0; v < nV; v++) start[v + 1] += start[v];
+  const fill = start.slice(0, nV);
+  const byOrigin = new Int32Array(start[nV]);
+  for (let h = 0; h < nH; h++) {
+    if (!eDeleted[h >> 1] && inRange(heVertex[h]) && inRange(heVertex[h ^ 1])) byOrigin[fill[heVertex[h]]++] = h;
+  }
+  const stampedBy = new Int32Array(nV).fill(-1);
+  const firstTo = new Int32Array(nV);
+  for (let v = 0; v < nV; v++) {
+    for (let k = start[v]; k < start[v + 1]; k++) {
+      const h = byOrigin[k];
+      const target = heVertex[h ^ 1];
+      if (stampedBy[target] !== v) {
+        stampedBy[target] = v;
+        firstTo[target] = h;
+      } else if (v < target) {
+        const other = firstTo[target];
+        fail({
+          invariant: 'parallel-edge',
+          message: `e${other >> 1} and e${h >> 1} both join v${v} and v${target}: a mesh file cannot tell two such edges apart`,
+          halfedges: [other, h],
+          vertices: [v, target],
+        });
+      }
     }
   }
 }

@@ -61,6 +61,23 @@ describe('validate', () => {
     expect(invariants(mesh)).toEqual(['isolated-vertex']);
   });
 
+  it('names two edges that join the same two vertices', () => {
+    // two separate triangles, the second's first two corners then relabelled as the first's
+    const soup = { positions: new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, -1, 0]), faceStarts: new Uint32Array([0, 3, 6]), faceIndices: new Uint32Array([0, 1, 2, 4, 3, 5]) };
+    const mesh = buildMesh(soup).mesh;
+    expect(validate(mesh)).toEqual([]);
+    for (let h = 0; h < mesh.halfedgeSlots; h++) {
+      if (mesh.heVertex[h] === 3) mesh.heVertex[h] = 0;
+      if (mesh.heVertex[h] === 4) mesh.heVertex[h] = 1;
+    }
+    mesh.deleteVertex(3);
+    mesh.deleteVertex(4);
+    const parallel = validate(mesh).filter((v) => v.invariant === 'parallel-edge');
+    expect(parallel).toHaveLength(1);
+    expect(parallel[0]!.vertices).toEqual([0, 1]);
+    expect(parallel[0]!.message).toMatch(/^e\d+ and e\d+ both join v0 and v1/);
+  });
+
   it('names a vertex with two fans (a pinch)', () => {
     // the builder splits the bow tie's centre into v0 and v5; merge them back by hand
     const mesh = buildMesh(bowTie()).mesh;
