@@ -1,7 +1,17 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, validate } from '../../src/index.js';
-import { readMesh } from '../../src/core/io/index.js';
-import { attribute, faceLists, makePly, parseError, type PlyElementSpec, plyEncodings, read, text } from './helpers.js';
+import { buildMesh, tetrahedron, validate } from '../../src/index.js';
+import { readMesh, writeSoup } from '../../src/core/io/index.js';
+import {
+  attribute,
+  expectSameSoup,
+  faceLists,
+  makePly,
+  parseError,
+  type PlyElementSpec,
+  plyEncodings,
+  read,
+  text,
+} from './helpers.js';
 
 const xyz = [
   { name: 'x', type: 'float' },
@@ -261,6 +271,20 @@ describe('PLY headers with many elements and properties', () => {
       expect(file.notes).toContain("kept vertex properties 'p0', 'p1', 'p2', 'p3', 'p4' and 99995 more as attributes");
     },
     20_000,
+  );
+
+  it(
+    'writes and reads back 100000 scalar attributes, each under its own name',
+    () => {
+      const n = 100_000;
+      const soup = tetrahedron();
+      soup.vertexAttributes = Array.from({ length: n }, (_, i) => ({ name: `a${i}`, itemSize: 1, data: new Uint8Array([i % 7, 1, 2, 3]) }));
+      for (const format of ['ply', 'ply-binary'] as const) {
+        const back = read(writeSoup(soup, format)).soup;
+        expectSameSoup(back, soup);
+      }
+    },
+    30_000,
   );
 
   it('notes skipped elements, skipped lists, taken names and keywordless lines once each, naming the first few', () => {
