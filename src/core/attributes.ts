@@ -61,7 +61,8 @@ export class AttributeSet {
   /**
    * Adds an attribute filled with zeros, or returns the existing one of the same name when its
    * type and item size match.
-   * @throws InvalidInputError when the name is taken by an attribute of another shape.
+   * @throws InvalidInputError when the name is taken by an attribute of another shape, or the type
+   *   or item size is not one an attribute can have.
    */
   add(name: string, type: AttributeType, itemSize: number, interpolation?: Interpolation): Attribute {
     const existing = this.byName.get(name);
@@ -72,6 +73,11 @@ export class AttributeSet {
         );
       }
       return existing;
+    }
+    // the type may come from a file or a document: only the table's own keys name an array type
+    if (!Object.hasOwn(attributeArrayTypes, type)) {
+      const types = Object.keys(attributeArrayTypes).join(', ');
+      throw new InvalidInputError(`attribute '${name}': unknown attribute type '${type}' (types: ${types})`);
     }
     if (!Number.isInteger(itemSize) || itemSize < 1) {
       throw new InvalidInputError(`attribute '${name}': item size must be a positive integer, not ${itemSize}`);

@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, type HalfedgeMesh, ParseError, strip, tetrahedron, torus, validate } from '../../src/index.js';
+import {
+  buildMesh,
+  type HalfedgeMesh,
+  InvalidInputError,
+  ParseError,
+  strip,
+  tetrahedron,
+  torus,
+  validate,
+} from '../../src/index.js';
 import { type HalfedgeDocument, meshFromHalfedgeJSON, meshToHalfedgeJSON } from '../../src/core/io/index.js';
 import { meshArrays, parseError } from './helpers.js';
 
@@ -31,13 +40,21 @@ describe('halfedge JSON', () => {
     expect(meshArrays(back)).toEqual(meshArrays(mesh));
   });
 
-  it('reads its own JSON text, with NaN positions written as null', () => {
-    const { mesh } = buildMesh(strip(3));
-    mesh.setPosition(2, Number.NaN, 0, 0);
-    const textDoc = JSON.stringify(meshToHalfedgeJSON(mesh));
-    const back = meshFromHalfedgeJSON(textDoc);
+  it('reads its own JSON text', () => {
+    const mesh = decorated();
+    const back = meshFromHalfedgeJSON(JSON.stringify(meshToHalfedgeJSON(mesh)));
     expect(meshArrays(back)).toEqual(meshArrays(mesh));
     expect(validate(back)).toEqual([]);
+  });
+
+  it('refuses to write NaN or infinity, which JSON cannot hold, naming the element and the field', () => {
+    const { mesh } = buildMesh(strip(3));
+    mesh.setPosition(2, 0, Number.NaN, 0);
+    expect(() => meshToHalfedgeJSON(mesh)).toThrow(InvalidInputError);
+    expect(() => meshToHalfedgeJSON(mesh)).toThrow(/^vertex 2: item 1 of 'position' is NaN; JSON has no NaN or infinity/);
+    const attributed = decorated();
+    attributed.halfedgeAttributes.get('texcoord')!.data[2 * 7 + 1] = -Infinity;
+    expect(() => meshToHalfedgeJSON(attributed)).toThrow(/^halfedge 7: item 1 of attribute 'texcoord' is -Infinity;/);
   });
 
   it('reads a broken mesh as it is, so a bug report shows the bug', () => {
@@ -70,9 +87,91 @@ describe('halfedge JSON', () => {
       /face 1: attribute 'area' is not described/,
     ],
     ['a wrong format', (doc) => ({ ...doc, format: 'obj' }), /'format' must be 'halfedge-json'/],
+    [
+      'a null coordinate (what JSON makes of NaN)',
+      (doc) => JSON.stringify(doc).replace('"position":[-1,-1,1]', '"position":[-1,-1,null]'),
+      /vertex 3: item 2 of 'position' is null, not a number \(JSON writes NaN and infinity as null\)/,
+    ],
+    [
+      'a coordinate too large for a double',
+      (doc) => JSON.stringify(doc).replace('"position":[-1,-1,1]', '"position":[-1,1e999,1]'),
+      /vertex 3: item 1 of 'position' is Infinity, which float64 cannot hold/,
+    ],
+    [
+      'a coordinate that is text',
+      (doc) => ((doc.vertices[3].position[0] = '1' as unknown as number), doc),
+      /vertex 3: item 0 of 'position' is "1", not a number$/,
+    ],
     ['not JSON at all', () => '{ "format": ', /not valid JSON/],
     ['not an object', () => 42, /must be an object/],
   ];
+  /** A tetrahedron with a vertex attribute `color` (uint8 × 3), each of its records spoiled by `spoil`. */
+  const coloured = (spoil: (doc: HalfedgeDocument) => void) => {
+    const { mesh } = buildMesh(tetrahedron());
+    mesh.vertexAttributes.add('color', 'uint8', 3).data.fill(9);
+    const doc = meshToHalfedgeJSON(mesh);
+    spoil(doc);
+    return doc;
+  };
+  const malformedAttributes: Array<[string, HalfedgeDocument, RegExp]> = [
+    [
+      'an itemSize of 1e300 before allocating it',
+      coloured((doc) => (doc.attributes[0].itemSize = 1e300)),
+      /^attributes\[0\]\.itemSize is 1e\+300; the document holds 12 values of vertex attribute 'color' for 4 vertices$/,
+    ],
+    [
+      'an itemSize of 2^31 before allocating it',
+      coloured((doc) => (doc.attributes[0].itemSize = 2 ** 31)),
+      /^attributes\[0\]\.itemSize is 2147483648; the document holds 12 values/,
+    ],
+    [
+      'an itemSize only one record agrees with, naming the first record that does not',
+      coloured((doc) => {
+        doc.attributes[0].itemSize = 1000;
+        doc.vertices[0].attributes!.color = Array.from({ length: 1000 }, () => 1);
+      }),
+      /^vertex 1: attribute 'color' must be 1000 numbers$/,
+    ],
+    [
+      'a record with too few values',
+      coloured((doc) => doc.vertices[2].attributes!.color.pop()),
+      /^vertex 2: attribute 'color' must be 3 numbers$/,
+    ],
+    [
+      'a value an integer attribute would wrap',
+      coloured((doc) => (doc.vertices[1].attributes!.color[2] = 256)),
+      /^vertex 1: item 2 of attribute 'color' is 256, which uint8 cannot hold$/,
+    ],
+    [
+      'a fraction in an integer attribute',
+      coloured((doc) => (doc.vertices[3].attributes!.color[0] = 1.5)),
+      /^vertex 3: item 0 of attribute 'color' is 1.5, which uint8 cannot hold$/,
+    ],
+    [
+      'a null attribute value',
+      coloured((doc) => ((doc.vertices[0].attributes!.color[1] as number | null) = null)),
+      /^vertex 0: item 1 of attribute 'color' is null, not a number/,
+    ],
+  ];
+  for (const [what, doc, reason] of malformedAttributes) {
+    it(`refuses ${what}, naming the field`, () => {
+      const error = parseError(() => meshFromHalfedgeJSON(JSON.stringify(doc)));
+      expect(error.format).toBe('halfedge-json');
+      expect(error.reason).toMatch(reason);
+    });
+  }
+
+  it('reads a float32 attribute value written as a double that float32 holds exactly, and refuses one beyond its range', () => {
+    const { mesh } = buildMesh(tetrahedron());
+    mesh.faceAttributes.add('weight', 'float32', 1).data.set([0.1, 0.2, 0.3, 3e38]);
+    const doc = meshToHalfedgeJSON(mesh);
+    expect(meshArrays(meshFromHalfedgeJSON(JSON.stringify(doc)))).toEqual(meshArrays(mesh));
+    doc.faces[3].attributes!.weight[0] = 1e39;
+    expect(parseError(() => meshFromHalfedgeJSON(doc)).reason).toBe(
+      "face 3: item 0 of attribute 'weight' is 1e+39, which float32 cannot hold",
+    );
+  });
+
   for (const [what, spoil, message] of malformed) {
     it(`refuses ${what} with a ParseError that names the record`, () => {
       const doc = meshToHalfedgeJSON(buildMesh(tetrahedron()).mesh);

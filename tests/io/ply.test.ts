@@ -1,7 +1,17 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, validate } from '../../src/index.js';
-import { readMesh } from '../../src/core/io/index.js';
-import { attribute, faceLists, makePly, parseError, type PlyElementSpec, plyEncodings, read, text } from './helpers.js';
+import { buildMesh, tetrahedron, validate } from '../../src/index.js';
+import { readMesh, writeSoup } from '../../src/core/io/index.js';
+import {
+  attribute,
+  expectSameSoup,
+  faceLists,
+  makePly,
+  parseError,
+  type PlyElementSpec,
+  plyEncodings,
+  read,
+  text,
+} from './helpers.js';
 
 const xyz = [
   { name: 'x', type: 'float' },
@@ -242,6 +252,83 @@ describe('PLY headers as real files write them', () => {
       const file = read(makePly(encoding, [square]));
       expect(file.counts).toEqual({ vertices: 4, faces: 0 });
       expect(file.notes).toContain('no faces: loaded as a point set');
+    }
+  });
+});
+
+describe('PLY headers with many elements and properties', () => {
+  it(
+    'plans a header of 100000 properties in one pass, keeping each and naming only the first few in its note',
+    () => {
+      const n = 100_000;
+      const props = [...xyz, ...Array.from({ length: n }, (_, i) => ({ name: `p${i}`, type: 'uchar' }))];
+      const row = [1, 2, 3, ...Array.from({ length: n }, (_, i) => i % 251)];
+      const file = read(makePly('binary_little_endian', [{ name: 'vertex', props, rows: [row] }]));
+      expect(Array.from(file.soup.positions)).toEqual([1, 2, 3]);
+      const kept = file.soup.vertexAttributes ?? [];
+      expect(kept.length).toBe(n);
+      expect([kept[0].name, kept[0].data[0], kept[n - 1].name, kept[n - 1].data[0]]).toEqual(['p0', 0, `p${n - 1}`, (n - 1) % 251]);
+      expect(file.notes).toContain("kept vertex properties 'p0', 'p1', 'p2', 'p3', 'p4' and 99995 more as attributes");
+    },
+    20_000,
+  );
+
+  it(
+    'writes and reads back 100000 scalar attributes, each under its own name',
+    () => {
+      const n = 100_000;
+      const soup = tetrahedron();
+      soup.vertexAttributes = Array.from({ length: n }, (_, i) => ({ name: `a${i}`, itemSize: 1, data: new Uint8Array([i % 7, 1, 2, 3]) }));
+      for (const format of ['ply', 'ply-binary'] as const) {
+        const back = read(writeSoup(soup, format)).soup;
+        expectSameSoup(back, soup);
+      }
+    },
+    30_000,
+  );
+
+  it('notes skipped elements, skipped lists, taken names and keywordless lines once each, naming the first few', () => {
+    const many = Array.from({ length: 9 }, (_, i): PlyElementSpec => ({ name: `extra${i}`, props: [{ name: 'n', type: 'int' }], rows: [[i]] }));
+    const lists = Array.from({ length: 7 }, (_, i) => ({ name: `list${i}`, type: 'int', count: 'uchar' }));
+    const vertex = {
+      name: 'vertex',
+      props: [...xyz, ...lists, { name: 'q', type: 'int' }, { name: 'q', type: 'int' }, { name: 'color', type: 'int' }],
+      rows: square.rows.map((row) => [...row, ...lists.map(() => [1, 2]), 5, 6, 7]),
+    };
+    const banner = Array.from({ length: 8 }, (_, i) => `Banner line ${i}`);
+    const file = read(makePly('ascii', [vertex, ...many, twoTriangles], banner));
+    expect(file.notes).toEqual([
+      "header lines 3, 4, 5, 6, 7 and 3 more have no PLY keyword (the first: 'Banner line 0'): kept as comments",
+      "skipped vertex properties 'q', 'color': the names are taken",
+      "kept vertex property 'q' as an attribute",
+      "skipped vertex list properties 'list0', 'list1', 'list2', 'list3', 'list4' and 2 more",
+      "skipped elements 'extra0' (1 row), 'extra1' (1 row), 'extra2' (1 row), 'extra3' (1 row), 'extra4' (1 row) and 4 more",
+    ]);
+    expect(faceLists(file.soup)).toEqual(faceLists(read(makePly('ascii', [square, twoTriangles])).soup));
+  });
+
+  it('cuts a long element name short in its note', () => {
+    const long = 'e'.repeat(100_000);
+    const file = read(makePly('ascii', [square, { name: long, props: [{ name: 'n', type: 'int' }], rows: [[1]] }]));
+    expect(file.notes).toContain(`skipped element '${'e'.repeat(40)}…' (1 row)`);
+  });
+
+  it('reads the first vertex and face elements and skips a repeat, whose rows do not count as vertices', () => {
+    const moreVertices = { ...square, rows: [...square.rows, [5, 5, 5], [6, 6, 6]] };
+    const otherFaces = { ...twoTriangles, rows: [[[4, 5, 0]]] };
+    for (const encoding of plyEncodings) {
+      const file = read(makePly(encoding, [square, moreVertices, twoTriangles, otherFaces]));
+      expect(Array.from(file.soup.positions)).toEqual(square.rows.flat());
+      expect(faceLists(file.soup)).toEqual([
+        [0, 1, 2],
+        [0, 2, 3],
+      ]);
+      expect(file.notes).toContain("skipped elements 'vertex' (6 rows), 'face' (1 row)");
+      // a face of the first face element must index the first vertex element's rows
+      const outside = { ...twoTriangles, rows: [[[0, 1, 4]]] };
+      expect(parseError(() => read(makePly(encoding, [square, moreVertices, outside]))).reason).toMatch(
+        /face 0: vertex index 4 is out of range 0..3/,
+      );
     }
   });
 });

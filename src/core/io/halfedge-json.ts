@@ -13,16 +13,21 @@
  * gives the identical mesh, ids and all, even a broken one: the reader checks that the document
  * is well formed (types, ids in order, pointers in range, `twin = id ^ 1`, `edge = id >> 1`) but
  * not the mesh invariants, which is `validate()`'s job. Attributes appear in each record by name,
- * with their types in `attributes`. JSON has no NaN or infinity: they are written as null (NaN).
+ * with their types in `attributes`.
+ *
+ * JSON has no NaN or infinity (`JSON.stringify` turns them into null), so a mesh holding one is
+ * refused by the writer, and a null or an out-of-range number by the reader, naming the field:
+ * the library reads back everything it writes, and writes nothing it could not read.
  */
 import {
   type Attribute,
+  type AttributeArray,
   attributeArrayTypes,
   type AttributeSet,
   type AttributeType,
   type Interpolation,
 } from '../attributes.js';
-import { ParseError } from '../errors.js';
+import { InvalidInputError, ParseError } from '../errors.js';
 import { HalfedgeMesh } from '../mesh.js';
 import { plural } from '../report.js';
 
@@ -37,13 +42,13 @@ export interface AttributeDescription {
 }
 
 /** Values of the attributes of one element, by name. */
-export type AttributeValues = Record<string, Array<number | null>>;
+export type AttributeValues = Record<string, number[]>;
 
 export interface VertexRecord {
   id: number;
   /** An outgoing halfedge (the boundary one on the boundary), -1 when isolated. */
   halfedge: number;
-  position: Array<number | null>;
+  position: number[];
   deleted?: true;
   attributes?: AttributeValues;
 }
@@ -91,6 +96,8 @@ export interface HalfedgeDocument {
  * @example
  *   const doc = meshToHalfedgeJSON(mesh);
  *   doc.halfedges[0]; // { id: 0, origin: 0, twin: 1, next: 2, prev: 4, face: 0, edge: 0 }
+ * @throws InvalidInputError naming the element and field when a position or attribute value is NaN
+ *   or infinite, which JSON cannot hold.
  */
 export function meshToHalfedgeJSON(mesh: HalfedgeMesh): HalfedgeDocument {
   const attributes: AttributeDescription[] = [];
@@ -109,8 +116,9 @@ export function meshToHalfedgeJSON(mesh: HalfedgeMesh): HalfedgeDocument {
 
   const vertices: VertexRecord[] = [];
   for (let v = 0; v < mesh.vertexSlots; v++) {
-    const position = [positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]].map(jsonNumber);
-    vertices.push(withExtras({ id: v, halfedge: mesh.vHalfedge[v], position }, mesh.vDeleted[v], vertexAttributes, v));
+    const position = finiteItem(positions, 3, `vertex ${v}`, v, "'position'");
+    const record = { id: v, halfedge: mesh.vHalfedge[v], position };
+    vertices.push(withExtras(record, 'vertex', mesh.vDeleted[v], vertexAttributes, v));
   }
   const halfedges: HalfedgeRecord[] = [];
   for (let h = 0; h < mesh.halfedgeSlots; h++) {
@@ -123,33 +131,52 @@ export function meshToHalfedgeJSON(mesh: HalfedgeMesh): HalfedgeDocument {
       face: mesh.heFace[h],
       edge: h >> 1,
     };
-    halfedges.push(withExtras(record, mesh.eDeleted[h >> 1], halfedgeAttributes, h));
+    halfedges.push(withExtras(record, 'halfedge', mesh.eDeleted[h >> 1], halfedgeAttributes, h));
   }
   const edges: EdgeRecord[] = [];
   for (let e = 0; e < mesh.edgeSlots; e++) {
-    edges.push(withExtras({ id: e, halfedges: [2 * e, 2 * e + 1] }, mesh.eDeleted[e], edgeAttributes, e));
+    edges.push(withExtras({ id: e, halfedges: [2 * e, 2 * e + 1] }, 'edge', mesh.eDeleted[e], edgeAttributes, e));
   }
   const faces: FaceRecord[] = [];
   for (let f = 0; f < mesh.faceSlots; f++) {
-    faces.push(withExtras({ id: f, halfedge: mesh.fHalfedge[f] }, mesh.fDeleted[f], faceAttributes, f));
+    faces.push(withExtras({ id: f, halfedge: mesh.fHalfedge[f] }, 'face', mesh.fDeleted[f], faceAttributes, f));
   }
   return { format: 'halfedge-json', version: 1, vertices, halfedges, edges, faces, attributes };
 }
 
-function withExtras<T extends object>(record: T, deleted: number, attributes: Attribute[], id: number): T {
+function withExtras<T extends object>(
+  record: T,
+  kind: MeshElementKind,
+  deleted: number,
+  attributes: Attribute[],
+  id: number,
+): T {
   const extras: { deleted?: true; attributes?: AttributeValues } = {};
   if (deleted) extras.deleted = true;
   if (attributes.length > 0) {
-    extras.attributes = {};
-    for (const { name, itemSize, data } of attributes) {
-      extras.attributes[name] = Array.from(data.subarray(itemSize * id, itemSize * (id + 1)), jsonNumber);
-    }
+    // entries, not assignments: an attribute may be called `__proto__`, which an assignment to a
+    // plain object would take for its prototype instead of a key
+    const item = ({ name, itemSize, data }: Attribute) => finiteItem(data, itemSize, `${kind} ${id}`, id, `attribute '${name}'`);
+    extras.attributes = Object.fromEntries(attributes.map((attribute) => [attribute.name, item(attribute)]));
   }
   return { ...record, ...extras };
 }
 
-function jsonNumber(x: number): number | null {
-  return Number.isFinite(x) ? x : null;
+/**
+ * Item `id` of `data` (`itemSize` numbers) as a list.
+ * @throws InvalidInputError naming the element (`where`) and `field` when a number is not finite.
+ */
+function finiteItem(data: ArrayLike<number>, itemSize: number, where: string, id: number, field: string): number[] {
+  const item: number[] = [];
+  for (let k = 0; k < itemSize; k++) {
+    const x = data[itemSize * id + k];
+    if (!Number.isFinite(x)) {
+      const why = 'JSON has no NaN or infinity, so halfedge JSON cannot hold it';
+      throw new InvalidInputError(`${where}: item ${k} of ${field} is ${x}; ${why}`);
+    }
+    item.push(x);
+  }
+  return item;
 }
 
 /**
@@ -211,7 +238,8 @@ export function meshFromHalfedgeJSON(doc: unknown): HalfedgeMesh {
     return record;
   };
 
-  const attributes = readDescriptions(descriptions, mesh, fail);
+  const records: Record<MeshElementKind, unknown[]> = { vertex: vertices, halfedge: halfedges, edge: edges, face: faces };
+  const attributes = readDescriptions(descriptions, records, mesh, fail);
   const deleted: Record<MeshElementKind, Uint8Array> = {
     vertex: new Uint8Array(vertices.length),
     halfedge: new Uint8Array(halfedges.length),
@@ -227,8 +255,7 @@ export function meshFromHalfedgeJSON(doc: unknown): HalfedgeMesh {
   vertices.forEach((_, v) => {
     const record = recordAt(vertices, v, 'vertex');
     mesh.vHalfedge[v] = field(record, `vertex ${v}`, 'halfedge', 'halfedge');
-    const position = numbers(record.position, 3) ?? fail(`vertex ${v}: 'position' must be 3 numbers`);
-    mesh.setPosition(v, position[0], position[1], position[2]);
+    readNumbers(record.position, mesh.positions, 'float64', 3, v, `vertex ${v}`, "'position'", fail);
     readExtras(record, 'vertex', v);
   });
   halfedges.forEach((_, h) => {
@@ -277,11 +304,36 @@ function isObject(value: unknown): value is JsonObject {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
 }
 
-/** `count` numbers (null read as NaN, which JSON cannot write), or null when `value` is not that. */
-function numbers(value: unknown, count: number): number[] | null {
-  if (!Array.isArray(value) || value.length !== count) return null;
-  if (!value.every((x) => typeof x === 'number' || x === null)) return null;
-  return value.map((x: number | null) => x ?? Number.NaN);
+/**
+ * Stores `value`, a list of `itemSize` numbers, as item `id` of `data`. Each must be a number the
+ * array holds as it is: finite (JSON writes NaN and infinity as null, and reads 1e999 as
+ * infinity), within the range of a float32 array, and a whole number in range for an integer one
+ * (which would otherwise wrap 256 to 0 or cut 1.5 to 1 without a word).
+ */
+function readNumbers(
+  value: unknown,
+  data: Float64Array | AttributeArray,
+  type: AttributeType,
+  itemSize: number,
+  id: number,
+  where: string,
+  field: string,
+  fail: Fail,
+): void {
+  if (!Array.isArray(value) || value.length !== itemSize) return fail(`${where}: ${field} must be ${plural(itemSize, 'number')}`);
+  const exact = !type.startsWith('float');
+  for (let k = 0; k < itemSize; k++) {
+    const x: unknown = value[k];
+    const at = itemSize * id + k;
+    if (typeof x !== 'number') {
+      const why = x === null ? ' (JSON writes NaN and infinity as null)' : '';
+      fail(`${where}: item ${k} of ${field} is ${JSON.stringify(x) ?? String(x)}, not a number${why}`);
+    }
+    data[at] = x as number;
+    if (!Number.isFinite(data[at]) || (exact && data[at] !== x)) {
+      fail(`${where}: item ${k} of ${field} is ${String(x)}, which ${type} cannot hold`);
+    }
+  }
 }
 
 function table(doc: JsonObject, key: string, fail: Fail): unknown[] {
@@ -291,7 +343,12 @@ function table(doc: JsonObject, key: string, fail: Fail): unknown[] {
 }
 
 /** Adds the described attributes to the mesh; returns them by element kind and name. */
-function readDescriptions(descriptions: unknown[], mesh: HalfedgeMesh, fail: Fail): Map<string, Attribute> {
+function readDescriptions(
+  descriptions: unknown[],
+  records: Record<MeshElementKind, unknown[]>,
+  mesh: HalfedgeMesh,
+  fail: Fail,
+): Map<string, Attribute> {
   const sets: Record<MeshElementKind, AttributeSet> = {
     vertex: mesh.vertexAttributes,
     halfedge: mesh.halfedgeAttributes,
@@ -313,15 +370,50 @@ function readDescriptions(descriptions: unknown[], mesh: HalfedgeMesh, fail: Fai
       fail(`${what}: unknown type ${JSON.stringify(type)}`);
     }
     if (!Number.isInteger(itemSize) || (itemSize as number) < 1) fail(`${what}: 'itemSize' must be a positive integer`);
+    const kind = element as MeshElementKind;
+    checkItemSize(records[kind], kind, name as string, itemSize as number, i, fail);
     if (interpolation !== 'linear' && interpolation !== 'copy') {
       fail(`${what}: 'interpolation' must be 'linear' or 'copy'`);
     }
     const key = `${element}:${name}`;
     if (byKey.has(key)) fail(`attribute ${i}: ${element} attribute '${name}' is described twice`);
-    const set = sets[element as MeshElementKind];
+    const set = sets[kind];
     byKey.set(key, set.add(name as string, type as AttributeType, itemSize as number, interpolation as Interpolation));
   });
   return byKey;
+}
+
+/**
+ * The attribute's array is allocated from `itemSize`, so before that every record must list
+ * exactly `itemSize` values for it: the array then holds no more numbers than the document does.
+ * When no record agrees with `itemSize`, the description is what is wrong, and the message says so.
+ */
+function checkItemSize(records: unknown[], kind: MeshElementKind, name: string, itemSize: number, i: number, fail: Fail): void {
+  let agreeing = 0;
+  let held = 0;
+  let first = -1;
+  for (let r = 0; r < records.length; r++) {
+    const list = ownList(records[r], name);
+    held += list?.length ?? 0;
+    if (list?.length === itemSize) agreeing++;
+    else if (first < 0) first = r;
+  }
+  if (first < 0) return;
+  if (agreeing === 0) {
+    const values = `${plural(held, 'value')} of ${kind} attribute '${name}'`;
+    const elements = plural(records.length, kind, kind === 'vertex' ? 'vertices' : `${kind}s`);
+    fail(`attributes[${i}].itemSize is ${itemSize}; the document holds ${values} for ${elements}`);
+  }
+  const wrong = ownList(records[first], name) ? `must be ${plural(itemSize, 'number')}` : 'is missing';
+  fail(`${kind} ${first}: attribute '${name}' ${wrong}`);
+}
+
+/** The record's own list of values for attribute `name` (never one found on a prototype), if it has one. */
+function ownList(record: unknown, name: string): unknown[] | undefined {
+  const values = isObject(record) ? record.attributes : undefined;
+  if (!isObject(values) || !Object.hasOwn(values, name)) return undefined;
+  const list = values[name];
+  return Array.isArray(list) ? list : undefined;
 }
 
 /** Copies one record's attribute values into the mesh's attribute arrays. */
@@ -336,10 +428,9 @@ function readAttributeValues(
   if (!isObject(values)) return fail(`${kind} ${id}: 'attributes' must be an object`);
   for (const [key, attribute] of attributes) {
     if (!key.startsWith(`${kind}:`)) continue;
-    const { name, itemSize, data } = attribute;
-    const value = numbers(values[name], itemSize);
-    if (!value) return fail(`${kind} ${id}: attribute '${name}' must be ${plural(itemSize, 'number')}`);
-    data.set(value, itemSize * id);
+    const { name, type, itemSize, data } = attribute;
+    // an own list of itemSize values: checkItemSize made sure of it before allocating the array
+    readNumbers(values[name], data, type, itemSize, id, `${kind} ${id}`, `attribute '${name}'`, fail);
   }
   for (const name of Object.keys(values)) {
     if (!attributes.has(`${kind}:${name}`)) fail(`${kind} ${id}: attribute '${name}' is not described in 'attributes'`);

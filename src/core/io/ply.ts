@@ -40,27 +40,31 @@ import type { SoupAttribute } from '../soup.js';
 import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes } from './binary.js';
 import { GrowableArray } from './growable.js';
 import { type Encoding, type MeshFile, noteNonFinitePositions, type Progress, PROGRESS_ROWS } from './mesh-file.js';
+import { quoted, someOf } from './names.js';
 import { TextScanner } from './text.js';
 
-/** Every PLY type name, old (`uchar`) and new (`uint8`), and the type of the values it holds. */
-const plyTypeNames: Record<string, AttributeType> = {
-  char: 'int8',
-  int8: 'int8',
-  uchar: 'uint8',
-  uint8: 'uint8',
-  short: 'int16',
-  int16: 'int16',
-  ushort: 'uint16',
-  uint16: 'uint16',
-  int: 'int32',
-  int32: 'int32',
-  uint: 'uint32',
-  uint32: 'uint32',
-  float: 'float32',
-  float32: 'float32',
-  double: 'float64',
-  float64: 'float64',
-};
+/**
+ * Every PLY type name, old (`uchar`) and new (`uint8`), and the type of the values it holds. A Map,
+ * not an object: a file's type name must not find `constructor` or `toString` on a prototype.
+ */
+const plyTypeNames = new Map<string, AttributeType>([
+  ['char', 'int8'],
+  ['int8', 'int8'],
+  ['uchar', 'uint8'],
+  ['uint8', 'uint8'],
+  ['short', 'int16'],
+  ['int16', 'int16'],
+  ['ushort', 'uint16'],
+  ['uint16', 'uint16'],
+  ['int', 'int32'],
+  ['int32', 'int32'],
+  ['uint', 'uint32'],
+  ['uint32', 'uint32'],
+  ['float', 'float32'],
+  ['float32', 'float32'],
+  ['double', 'float64'],
+  ['float64', 'float64'],
+]);
 
 const encodings: readonly Encoding[] = ['ascii', 'binary_little_endian', 'binary_big_endian'];
 
@@ -131,22 +135,26 @@ function readHeader(bytes: Uint8Array): PlyHeader {
   const elements: PlyElement[] = [];
   const comments: string[] = [];
   const notes: string[] = [];
+  /** Header lines without a keyword, noted once at the end. */
+  const unknownLines: number[] = [];
+  let firstUnknownText = '';
   let encoding: Encoding | null = null;
 
   const nextType = (): ScalarType => {
     scanner.skipSpaces();
     const at = scanner.pos;
     const name = scanner.word();
-    const type = plyTypeNames[name];
+    const type = plyTypeNames.get(name);
     if (type === undefined) {
       const types = 'char, uchar, short, ushort, int, uint, float, double, or int8 … float64';
-      scanner.fail(`unknown property type '${scanner.token(at)}' (PLY types: ${types})`, at);
+      return scanner.fail(`unknown property type '${scanner.token(at)}' (PLY types: ${types})`, at);
     }
     return scalarTypes[type];
   };
 
-  for (;;) {
-    if (!scanner.skipBlankLines()) scanner.fail("the header has no 'end_header' line");
+  // every pass reads at least one byte of the file, so there are fewer passes than bytes
+  for (let pass = 0; ; pass++) {
+    if (pass > bytes.length || !scanner.skipBlankLines()) scanner.fail("the header has no 'end_header' line");
     const line = scanner.line;
     const start = scanner.pos;
     const keyword = scanner.word();
@@ -208,12 +216,19 @@ function readHeader(bytes: Uint8Array): PlyHeader {
         scanner.pos = start;
         const text = scanner.restOfLine();
         comments.push(text);
-        notes.push(`header line ${line} has no PLY keyword ('${text.slice(0, 40)}'): kept as a comment`);
+        if (unknownLines.length === 0) firstUnknownText = text;
+        unknownLines.push(line);
         scanner.nextLine();
       }
     }
   }
   if (encoding === null) return scanner.fail("the header has no 'format' line (such as 'format ascii 1.0')");
+  if (unknownLines.length === 1) {
+    notes.push(`header line ${unknownLines[0]} has no PLY keyword (${quoted(firstUnknownText)}): kept as a comment`);
+  } else if (unknownLines.length > 1) {
+    const lines = someOf(unknownLines.map(String));
+    notes.push(`header lines ${lines} have no PLY keyword (the first: ${quoted(firstUnknownText)}): kept as comments`);
+  }
 
   // after end_header come optional spaces and exactly one line ending: a binary body may well
   // start with the byte 0x0A, which must not be taken for a second line ending
@@ -319,9 +334,11 @@ interface Plan {
 
 function planElements(header: PlyHeader): Plan {
   const notes = header.notes;
+  // the first element of each of these names is the one read; a repeat is skipped like any other
   const vertexElement = header.elements.find((e) => e.name === 'vertex');
+  const faceElement = header.elements.find((e) => e.name === 'face');
+  const stripsElement = faceElement ? undefined : header.elements.find((e) => e.name === 'tristrips');
   const vertexCount = vertexElement?.count ?? 0;
-  const hasFaces = header.elements.some((e) => e.name === 'face');
   const plan: Plan = {
     elements: [],
     positions: new Float64Array(0),
@@ -332,6 +349,8 @@ function planElements(header: PlyHeader): Plan {
     strips: null,
     notes,
   };
+  /** Elements skipped whole, as `'name' (n rows)`, noted once at the end. */
+  const skipped: string[] = [];
 
   for (const element of header.elements) {
     const properties = element.properties.map(
@@ -344,20 +363,21 @@ function planElements(header: PlyHeader): Plan {
         list: null,
       }),
     );
+    const scalars = scalarsByName(properties);
     const rows = element.count;
     const lists = properties.filter((p) => p.property.countType !== null);
-    if (element.name === 'vertex') {
-      const xyz = findGroup(properties, [['x', 'y', 'z']], 3);
+    if (element === vertexElement) {
+      const xyz = findGroup(scalars, [['x', 'y', 'z']], 3);
       if (!xyz) {
-        const missing = ['x', 'y', 'z'].find((name) => !properties.some((p) => p.property.name === name));
+        const missing = ['x', 'y', 'z'].find((name) => !scalars.has(name));
         throw new ParseError('ply', { line: element.line }, `element 'vertex' has no scalar property '${missing}'`);
       }
       const float32 = xyz.every((p) => p.property.type.type === 'float32');
       plan.positions = float32 ? new Float32Array(3 * rows) : new Float64Array(3 * rows);
       route(xyz, plan.positions, 3);
-      planAttributes(element, properties, plan.vertexAttributes, notes, true);
-      for (const list of lists) notes.push(`skipped vertex list property '${list.property.name}'`);
-    } else if (element.name === 'face') {
+      planAttributes(element, properties, scalars, plan.vertexAttributes, notes, true);
+      noteSkippedLists(element, lists, notes);
+    } else if (element === faceElement) {
       const faceList =
         lists.find((p) => p.property.name === 'vertex_indices' || p.property.name === 'vertex_index') ??
         (lists.length === 1 ? lists[0] : undefined);
@@ -371,22 +391,21 @@ function planElements(header: PlyHeader): Plan {
       if (texcoords && texcoords !== faceList) {
         texcoords.list = plan.faceTexcoords = new ListCollector(rows, (n) => new Float32Array(n), -Infinity, Infinity);
       }
-      for (const list of lists) {
-        if (list !== faceList && list !== texcoords) notes.push(`skipped face list property '${list.property.name}'`);
-      }
-      planAttributes(element, properties, plan.faceAttributes, notes, false);
-    } else if (element.name === 'tristrips' && !hasFaces && lists.length > 0) {
+      noteSkippedLists(element, lists.filter((p) => p !== faceList && p !== texcoords), notes);
+      planAttributes(element, properties, scalars, plan.faceAttributes, notes, false);
+    } else if (element === stripsElement && lists.length > 0) {
       const stripList = lists.find((p) => p.property.name === 'vertex_indices') ?? lists[0];
       requireIntegers(element, stripList);
       stripList.list = plan.strips = new ListCollector(rows, (n) => new Int32Array(n), -1, vertexCount - 1);
     } else {
-      notes.push(`skipped element '${element.name}' (${plural(rows, 'row')})`);
+      skipped.push(`${quoted(element.name)} (${plural(rows, 'row')})`);
     }
     const rowBytes = lists.length > 0 ? -1 : properties.reduce((sum, p) => sum + p.property.type.size, 0);
     plan.elements.push({ element, properties, rowBytes });
   }
+  if (skipped.length > 0) notes.push(`skipped ${skipped.length === 1 ? 'element' : 'elements'} ${someOf(skipped)}`);
   if (!vertexElement) {
-    const names = header.elements.map((e) => `${e.name}(${e.count})`).join(', ') || 'none';
+    const names = someOf(header.elements.map((e) => `${quoted(e.name)} (${plural(e.count, 'row')})`)) || 'none';
     notes.push(`no 'vertex' element (elements: ${names}): nothing to show`);
   }
   return plan;
@@ -395,7 +414,7 @@ function planElements(header: PlyHeader): Plan {
 function requireIntegers(element: PlyElement, p: PropertyPlan): void {
   const { name, type } = p.property;
   if (type.type.startsWith('float')) {
-    const reason = `the vertex indices '${name}' of element '${element.name}' are ${type.type}, not integers`;
+    const reason = `the vertex indices ${quoted(name)} of element ${quoted(element.name)} are ${type.type}, not integers`;
     throw new ParseError('ply', { line: element.line }, reason);
   }
 }
@@ -410,15 +429,26 @@ function route(group: PropertyPlan[], target: NumberTarget, stride: number): voi
 }
 
 /**
+ * An element's scalar properties by name (the first, when a name repeats), looked up once each
+ * instead of searched for: a header may declare a hundred thousand properties.
+ */
+function scalarsByName(properties: PropertyPlan[]): Map<string, PropertyPlan> {
+  const scalars = new Map<string, PropertyPlan>();
+  for (const p of properties) {
+    if (p.property.countType === null && !scalars.has(p.property.name)) scalars.set(p.property.name, p);
+  }
+  return scalars;
+}
+
+/**
  * The scalar properties named by one of `spellings` (the first `required` names must all be
  * there; the rest are optional and kept only in order), or null.
  */
-function findGroup(properties: PropertyPlan[], spellings: string[][], required: number): PropertyPlan[] | null {
-  const scalar = (name: string) => properties.find((p) => p.property.name === name && p.property.countType === null);
+function findGroup(scalars: Map<string, PropertyPlan>, spellings: string[][], required: number): PropertyPlan[] | null {
   for (const names of spellings) {
     const group: PropertyPlan[] = [];
     for (const name of names) {
-      const p = scalar(name);
+      const p = scalars.get(name);
       if (!p) break;
       group.push(p);
     }
@@ -427,42 +457,61 @@ function findGroup(properties: PropertyPlan[], spellings: string[][], required: 
   return null;
 }
 
+/** "property 'a'", or "properties 'a', 'b', 'c', 'd', 'e' and 3 more" (names already quoted). */
+function propertyList(names: string[]): string {
+  return `${names.length === 1 ? 'property' : 'properties'} ${someOf(names)}`;
+}
+
+/** One note for the list properties of a vertex or face element that the soup has no place for. */
+function noteSkippedLists(element: PlyElement, lists: PropertyPlan[], notes: string[]): void {
+  if (lists.length > 0) notes.push(`skipped ${element.name} list ${propertyList(lists.map((p) => quoted(p.property.name)))}`);
+}
+
 /** Plans a vertex or face element's attributes: normal, colour, texcoord, then any other scalar. */
 function planAttributes(
   element: PlyElement,
   properties: PropertyPlan[],
+  scalars: Map<string, PropertyPlan>,
   attributes: SoupAttribute[],
   notes: string[],
   isVertex: boolean,
 ): void {
   const rows = element.count;
+  const taken = new Set(reservedNames);
   const add = (name: string, group: PropertyPlan[], type: AttributeType) => {
     const data = new attributeArrayTypes[type](rows * group.length);
     route(group, data, group.length);
     attributes.push({ name, itemSize: group.length, data });
+    taken.add(name);
   };
   if (isVertex) {
-    const normal = findGroup(properties, normalNames, 3);
+    const normal = findGroup(scalars, normalNames, 3);
     if (normal) add('normal', normal, 'float32');
-    const texcoord = findGroup(properties, texcoordNames, 2);
+    const texcoord = findGroup(scalars, texcoordNames, 2);
     if (texcoord) add('texcoord', texcoord, 'float32');
   }
-  const color = findGroup(properties, colorNames, 3);
+  const color = findGroup(scalars, colorNames, 3);
   if (color) add('color', color, color[0].property.type.type);
 
   const kept: string[] = [];
+  const clashing: string[] = [];
   for (const p of properties) {
     const { name, type, countType } = p.property;
     if (p.target || countType !== null) continue;
-    if (reservedNames.has(name) || attributes.some((a) => a.name === name)) {
-      notes.push(`skipped ${element.name} property '${name}': the name is taken`);
+    if (taken.has(name)) {
+      clashing.push(quoted(name));
       continue;
     }
     add(name, [p], type.type);
-    kept.push(`'${name}'`);
+    kept.push(quoted(name));
   }
-  if (kept.length === 1) notes.push(`kept ${element.name} property ${kept[0]} as an attribute`);
-  if (kept.length > 1) notes.push(`kept ${element.name} properties ${kept.join(', ')} as attributes`);
+  if (clashing.length > 0) {
+    const why = clashing.length === 1 ? 'the name is taken' : 'the names are taken';
+    notes.push(`skipped ${element.name} ${propertyList(clashing)}: ${why}`);
+  }
+  if (kept.length > 0) {
+    notes.push(`kept ${element.name} ${propertyList(kept)} as ${kept.length === 1 ? 'an attribute' : 'attributes'}`);
+  }
 }
 
 // -------------------------------------------------------------------------------------------------

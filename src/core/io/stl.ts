@@ -135,8 +135,9 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
 
   expect('solid');
   comments.push(`solid ${scanner.restOfLine()}`.trim());
-  for (;;) {
-    if (!scanner.skipBlankLines()) scanner.fail("the file ends before 'endsolid'");
+  // every pass reads at least one word, so there are fewer passes than bytes
+  for (let pass = 0; ; pass++) {
+    if (pass > bytes.length || !scanner.skipBlankLines()) scanner.fail("the file ends before 'endsolid'");
     const at = scanner.pos;
     const keyword = scanner.word().toLowerCase();
     if (keyword === 'endsolid') {
@@ -155,8 +156,9 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
     expect('outer');
     expect('loop');
     let cornerCount = 0;
-    for (;;) {
-      if (!scanner.skipBlankLines()) scanner.fail(`the file ends inside facet ${facet}`);
+    // every pass reads at least one word, so there are fewer passes than bytes
+    for (let pass = 0; ; pass++) {
+      if (pass > bytes.length || !scanner.skipBlankLines()) scanner.fail(`the file ends inside facet ${facet}`);
       const wordAt = scanner.pos;
       const word = scanner.word().toLowerCase();
       if (word === 'endloop') break;
@@ -198,6 +200,7 @@ function weldCorners(corners: Float32Array<ArrayBuffer>): {
     const y = bits[3 * c + 1];
     const z = bits[3 * c + 2];
     let slot = hashBits(x, y, z) & mask;
+    // ends within `size` probes: the table is at most half full, so an empty slot is always ahead
     for (;;) {
       const v = table[slot];
       if (v === -1) {

@@ -22,15 +22,13 @@ const plyTypeNames: Record<AttributeType, string> = {
   float64: 'double',
 };
 
-/** The property names of attributes with several numbers per element. */
-const vertexNames: Record<string, string[]> = {
-  normal: ['nx', 'ny', 'nz'],
-  color: ['red', 'green', 'blue', 'alpha'],
-  texcoord: ['s', 't'],
-};
-const faceNames: Record<string, string[]> = {
-  color: ['red', 'green', 'blue', 'alpha'],
-};
+/** The property names of attributes with several numbers per element (Maps: a name is any text). */
+const vertexNames = new Map([
+  ['normal', ['nx', 'ny', 'nz']],
+  ['color', ['red', 'green', 'blue', 'alpha']],
+  ['texcoord', ['s', 't']],
+]);
+const faceNames = new Map([['color', ['red', 'green', 'blue', 'alpha']]]);
 
 /** One scalar property: row r's value is `data[r × stride + offset]`. */
 interface Column {
@@ -140,14 +138,18 @@ export function writePly(soup: PolygonSoup, encoding: Encoding): Uint8Array {
  * The columns of the attributes PLY can hold: known ones under their property names, others of
  * one number per element under their own name. Attributes of other shapes are left out.
  */
-function attributeColumns(attributes: SoupAttribute[], known: Record<string, string[]>, taken: Column[]): Column[] {
+function attributeColumns(attributes: SoupAttribute[], known: Map<string, string[]>, taken: Column[]): Column[] {
   const columns: Column[] = [];
-  const isFree = (name: string) => /^\S+$/.test(name) && ![...taken, ...columns].some((c) => c.name === name);
+  const used = new Set(taken.map((c) => c.name));
+  const isFree = (name: string) => /^\S+$/.test(name) && !used.has(name);
   for (const { name, itemSize, data } of attributes) {
     const type = attributeTypeOf(data);
-    const names = Object.hasOwn(known, name) ? known[name].slice(0, itemSize) : itemSize === 1 ? [name] : [];
+    const names = known.get(name)?.slice(0, itemSize) ?? (itemSize === 1 ? [name] : []);
     if (names.length !== itemSize || !names.every(isFree)) continue;
-    names.forEach((property, k) => columns.push({ name: property, type, data, stride: itemSize, offset: k }));
+    names.forEach((property, k) => {
+      columns.push({ name: property, type, data, stride: itemSize, offset: k });
+      used.add(property);
+    });
   }
   return columns;
 }
