@@ -10,7 +10,8 @@
  *      stamp per upper vertex: no search, no hash map, no sort by comparison);
  *   3. when some pair runs the same way, flip faces so neighbours agree (per component, keeping the
  *      majority's orientation); a pair that still disagrees is a non-orientable seam and is cut;
- *   4. edges with three or more faces keep one pair and detach the rest;
+ *   4. edges with three or more faces keep one pair and detach the rest; a face cut or detached
+ *      from an edge takes its own copies of the edge's two vertices, and the corners are paired again;
  *   5. number the halfedges (twin pairs in adjacent slots, in order of first appearance) and link
  *      each face's loop;
  *   6. walk the fan of faces around each vertex; a vertex with several fans is duplicated, one copy
@@ -63,19 +64,29 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   progress(0.4);
 
   // 3. orient: flip faces until every pair runs opposite ways, or cut where it cannot
+  /** Corners whose face leaves their edge, with its own copies of the edge's two vertices. */
+  const detached: Detached[] = [];
   if (pairing.sameDirectionPairs > 0) {
     orientFaces(kept, pairing.twin, report);
     pairing = pairCorners(kept.corners, kept.starts, nInputVertices);
-    cutSeams(kept, pairing.twin, report);
+    cutSeams(kept, pairing.twin, report, detached);
   }
 
   // 4. edges with more than two faces: keep one pair, detach the others
-  for (const group of pairing.crowded) keepOnePair(group, kept, pairing.twin, report);
+  for (const group of pairing.crowded) keepOnePair(group, kept, pairing.twin, report, detached);
+  let copyOf: number[] = [];
+  if (detached.length > 0) {
+    copyOf = detachCorners(kept, detached, nInputVertices, soup.faceIndices);
+    // copies only ever take corners out of an edge, so every edge now has one or two corners,
+    // and the two of a pair run opposite ways
+    pairing = pairCorners(kept.corners, kept.starts, nInputVertices + copyOf.length);
+  }
   progress(0.5);
 
   // 5. number the halfedges and link each face loop (twin becomes each corner's halfedge)
-  const mesh = linkFaces(kept, pairing.twin, nInputVertices, span(0.5, 0.7));
+  const mesh = linkFaces(kept, pairing.twin, nInputVertices + copyOf.length, span(0.5, 0.7));
   copyAttributes(soup, kept, mesh, pairing.twin);
+  copyOf.forEach((v, i) => mesh.vertexAttributes.copy(nInputVertices + i, v));
   progress(0.7);
 
   // 6. one fan per vertex
@@ -418,9 +429,11 @@ function orientFaces(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): 
 
 /**
  * After orienting, a pair that still runs the same way is a seam of a non-orientable surface:
- * cut it, so both corners get a boundary twin.
+ * cut it open. Unpairing the two corners alone would leave two boundary edges joining the same
+ * two vertices, a slit that no file can hold (a face lists its corners, not its edges: read back,
+ * the slit closes again). So the second face leaves the edge with its own copies of both vertices.
  */
-function cutSeams(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
+function cutSeams(kept: KeptFaces, twin: Int32Array, report: ReportBuilder, detached: Detached[]): void {
   const { corners, starts } = kept;
   for (let c = 0; c < twin.length; c++) {
     const d = twin[c];
@@ -430,17 +443,26 @@ function cutSeams(kept: KeptFaces, twin: Int32Array, report: ReportBuilder): voi
     report.orientable = false;
     const faces = [faceOfCorner(starts, c), faceOfCorner(starts, d)];
     const [a, b] = cornerEdge(kept, c);
-    report.add('non-orientable', {
-      message: `edge ${a}–${b} between faces ${inputFaceOf(kept, faces[0])} and ${inputFaceOf(kept, faces[1])} was cut open`,
+    const incident = {
+      message:
+        `edge ${a}–${b} between faces ${inputFaceOf(kept, faces[0])} and ${inputFaceOf(kept, faces[1])} was cut open: ` +
+        `face ${inputFaceOf(kept, faces[1])} got its own copies of vertices ${a} and ${b}`,
       inputVertices: [a, b],
       inputFaces: faces.map((f) => inputFaceOf(kept, f)),
       faces,
-    });
+      vertices: [a, b],
+    };
+    report.add('non-orientable', incident);
+    detached.push({ corner: d, incident });
   }
 }
 
-/** Of the corners along one edge, pairs the first with the first that runs the other way. */
-function keepOnePair(group: number[], kept: KeptFaces, twin: Int32Array, report: ReportBuilder): void {
+/**
+ * Of the corners along one edge, pairs the first with the first that runs the other way; the other
+ * faces leave the edge, each with its own copies of the edge's two vertices (see `cutSeams` for why
+ * unpairing them is not enough).
+ */
+function keepOnePair(group: number[], kept: KeptFaces, twin: Int32Array, report: ReportBuilder, detached: Detached[]): void {
   const { corners, starts } = kept;
   const first = group[0];
   const partner = group.find((c) => corners[c] !== corners[first]);
@@ -448,20 +470,53 @@ function keepOnePair(group: number[], kept: KeptFaces, twin: Int32Array, report:
     twin[first] = partner;
     twin[partner] = first;
   }
+  const leaving = group.filter((c) => c !== first && c !== partner);
   const faces = group.map((c) => faceOfCorner(starts, c));
-  const joined = partner === undefined ? [] : [faceOfCorner(starts, first), faceOfCorner(starts, partner)];
-  const detached = faces.filter((f) => !joined.includes(f));
+  const staying = [first, partner ?? first].map((c) => faceOfCorner(starts, c));
   const [a, b] = cornerEdge(kept, first);
   const names = (list: number[]) => list.map((f) => inputFaceOf(kept, f)).join(', ');
-  report.add('non-manifold-edge', {
+  const incident = {
     message:
       `edge ${a}–${b} is shared by ${faces.length} faces (${names(faces)}): ` +
-      (joined.length ? `${names(joined)} stay joined, ` : '') +
-      `${names(detached)} detached`,
+      (partner === undefined ? `${names(staying.slice(0, 1))} keeps it, ` : `${names(staying)} stay joined, `) +
+      `${names(leaving.map((c) => faceOfCorner(starts, c)))} detached with their own copies of vertices ${a} and ${b}`,
     inputVertices: [a, b],
     inputFaces: faces.map((f) => inputFaceOf(kept, f)),
     faces,
-  });
+    vertices: [a, b],
+  };
+  report.add('non-manifold-edge', incident);
+  for (const corner of leaving) detached.push({ corner, incident });
+}
+
+/** A corner whose face leaves its edge, and the repair incident that says so (its copies are added to it). */
+interface Detached {
+  corner: number;
+  incident: { vertices: number[] };
+}
+
+/**
+ * Gives the face of each detached corner its own copies of the corner's edge's two vertices,
+ * numbered from `nV` on (one copy per face and vertex, however many of its edges leave). The face
+ * thereby also lets go of its other edges at those vertices, which is what a file would say of it.
+ * Returns the vertex each copy copies. Only repairs come here: the corners are copied first when
+ * they are still the soup's own, which is never written to.
+ */
+function detachCorners(kept: KeptFaces, detached: Detached[], nV: number, soupCorners: IndexArray): number[] {
+  if (kept.corners === soupCorners) kept.corners = Int32Array.from(kept.corners);
+  const { corners, starts } = kept;
+  const copyOf: number[] = [];
+  for (const { corner: c, incident } of detached) {
+    const f = faceOfCorner(starts, c);
+    const next = c + 1 < starts[f + 1] ? c + 1 : starts[f];
+    for (const corner of [c, next]) {
+      if (corners[corner] >= nV) continue; // this face already has its copy of the vertex
+      copyOf.push(corners[corner]);
+      corners[corner] = nV + copyOf.length - 1;
+      incident.vertices.push(corners[corner]);
+    }
+  }
+  return copyOf;
 }
 
 function faceOfCorner(starts: IndexArray, c: number): number {
