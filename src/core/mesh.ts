@@ -34,7 +34,7 @@
  * the flags when `isCompact` is true (always, right after a build).
  */
 import { AttributeSet } from './attributes.js';
-import { InvalidInputError } from './errors.js';
+import { InvalidInputError, TopologyError } from './errors.js';
 
 export interface MeshCapacity {
   vertices: number;
@@ -151,9 +151,11 @@ export class HalfedgeMesh {
   isBoundaryFace(f: number): boolean {
     const start = this.fHalfedge[f];
     let h = start;
+    let steps = 0;
     do {
       if (this.heFace[h ^ 1] === -1) return true;
       h = this.heNext[h];
+      if (++steps > this.halfedgeSlots) throw new TopologyError(`the next cycle of f${f} does not close`);
     } while (h !== start);
     return false;
   }
@@ -169,6 +171,7 @@ export class HalfedgeMesh {
     do {
       n++;
       g = this.heNext[g];
+      if (n > this.halfedgeSlots) throw new TopologyError(`the next cycle from h${h} does not close`);
     } while (g !== h);
     return n;
   }
@@ -181,6 +184,7 @@ export class HalfedgeMesh {
     do {
       n++;
       h = this.hePrev[h] ^ 1;
+      if (n > this.halfedgeSlots) throw new TopologyError(`the rotation around v${v} does not close`);
     } while (h !== start);
     return n;
   }

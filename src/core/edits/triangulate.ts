@@ -167,11 +167,15 @@ function fanOverSkippedCorners(
 /**
  * The usual case, found in O(corners skipped): the points after x along its ring up to y, when
  * none of them is in a triangle (left out as straight, or dropped by earcut). Null otherwise.
+ * The walk goes from point to point, and where corners share a point it follows the first one's
+ * ring, which may lead round in a circle (a point whose next corner is at the same point leads
+ * back to itself): after as many steps as there are corners, y is not ahead.
  */
 function skippedAlongRing(point: Int32Array, next: Int32Array, used: Uint8Array, x: number, y: number): number[] | null {
   const skipped: number[] = [];
   let q = point[next[x]];
   while (q !== y && !used[q]) {
+    if (skipped.length === point.length) return null;
     skipped.push(q);
     q = point[next[q]];
   }
