@@ -17,6 +17,7 @@ export type Invariant =
   | 'edge-without-face'
   | 'face-halfedge'
   | 'face-degree'
+  | 'face-repeats-vertex'
   | 'vertex-halfedge'
   | 'isolated-vertex'
   | 'boundary-vertex-halfedge'
@@ -152,9 +153,17 @@ function checkCycles(mesh: HalfedgeMesh, fail: Fail): void {
   }
 }
 
+/**
+ * Each face has a live halfedge of its own, at least 3 sides, and passes through each vertex
+ * once: a file lists a face by its corners, and a reader drops a face that repeats one (which is
+ * how a dangling edge or a face touching itself at a vertex would look), so such a face does not
+ * survive save and reload.
+ */
 function checkFaces(mesh: HalfedgeMesh, fail: Fail): void {
-  const { heNext, heFace, fHalfedge, fDeleted, eDeleted } = mesh;
+  const { heNext, heVertex, heFace, fHalfedge, fDeleted, eDeleted } = mesh;
   const nH = mesh.halfedgeSlots;
+  const nV = mesh.vertexSlots;
+  const visitedBy = new Int32Array(nV).fill(-1);
   for (let f = 0; f < mesh.faceSlots; f++) {
     if (fDeleted[f]) continue;
     const start = fHalfedge[f];
@@ -172,13 +181,26 @@ function checkFaces(mesh: HalfedgeMesh, fail: Fail): void {
       continue;
     }
     let degree = 0;
+    let repeated = -1;
     let h = start;
     do {
       degree++;
+      const v = heVertex[h];
+      if (v >= 0 && v < nV) {
+        if (visitedBy[v] === f && repeated === -1) repeated = v;
+        visitedBy[v] = f;
+      }
       h = heNext[h];
     } while (h !== start && h >= 0 && degree <= nH);
     if (h === start && degree < 3) {
       fail({ invariant: 'face-degree', message: `f${f} has ${degree} sides; a face needs at least 3`, faces: [f] });
+    } else if (h === start && repeated !== -1) {
+      fail({
+        invariant: 'face-repeats-vertex',
+        message: `f${f} passes through v${repeated} twice: a mesh file lists a face by its corners and cannot hold that`,
+        faces: [f],
+        vertices: [repeated],
+      });
     }
   }
 }

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { bowTie, buildMesh, fan, type HalfedgeMesh, type Invariant, tetrahedron, torus, validate } from '../../src/index.js';
+import { bowTie, buildMesh, fan, type HalfedgeMesh, type Invariant, soupFromArrays, tetrahedron, torus, validate } from '../../src/index.js';
 
 const closed = () => buildMesh(tetrahedron()).mesh;
 const open = () => buildMesh(fan(3)).mesh;
@@ -76,6 +76,24 @@ describe('validate', () => {
     expect(parallel).toHaveLength(1);
     expect(parallel[0]!.vertices).toEqual([0, 1]);
     expect(parallel[0]!.message).toMatch(/^e\d+ and e\d+ both join v0 and v1/);
+  });
+
+  it('names a face that passes through one vertex twice', () => {
+    // a pentagon whose corner v3 is relabelled v0: it then runs v0 v1 v2 v0 v4
+    const mesh = buildMesh(soupFromArrays([0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 1, 0, 0, 2, 0], [[0, 1, 2, 3, 4]])).mesh;
+    expect(validate(mesh)).toEqual([]);
+    for (let h = 0; h < mesh.halfedgeSlots; h++) if (mesh.heVertex[h] === 3) mesh.heVertex[h] = 0;
+    mesh.vHalfedge[3] = -1;
+    mesh.deleteVertex(3);
+    const repeats = validate(mesh).filter((v) => v.invariant === 'face-repeats-vertex');
+    expect(repeats).toEqual([
+      {
+        invariant: 'face-repeats-vertex',
+        message: 'f0 passes through v0 twice: a mesh file lists a face by its corners and cannot hold that',
+        faces: [0],
+        vertices: [0],
+      },
+    ]);
   });
 
   it('names a vertex with two fans (a pinch)', () => {

@@ -1,7 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import {
+  canCollapseEdge,
   canMergeFaces,
   canPokeFace,
+  canSplitEdge,
+  collapseEdge,
   canTriangulateFace,
   mergeFaces,
   pokeFace,
@@ -13,7 +16,7 @@ import {
 import { TopologyError } from '../../src/core/errors.js';
 import { faceArea, faceNormal, signedVolume } from '../../src/core/geometry.js';
 import { cube, tetrahedron, torus } from '../../src/core/shapes.js';
-import { soupFromArrays } from '../../src/core/soup.js';
+import { type PolygonSoup, soupFromArrays } from '../../src/core/soup.js';
 import { meshStats } from '../../src/core/stats.js';
 import { checkedEdit, counts, degrees, edgeBetween, meshOf, square, triangleQuadPillow } from './helpers.js';
 
@@ -86,9 +89,34 @@ describe('mergeFaces', () => {
   it('refuses two faces that share a second edge (it would leave a dangling edge)', () => {
     const mesh = meshOf(triangleQuadPillow());
     const e = edgeBetween(mesh, 0, 2);
-    expect(canMergeFaces(mesh, e)).toMatch(/^f[02] and f[02] also share e\d+: the merged face would border itself along it/);
+    expect(canMergeFaces(mesh, e)).toMatch(/^f[02] and f[02] also share v1: the merged face would pass through v1 twice/);
     expect(() => mergeFaces(mesh, e)).toThrow(TopologyError);
   });
+
+  // the sequences that once led, every predicate saying yes, to meshes validate() rejects: each
+  // went through a merge of two faces that share a corner, a face that passes through it twice
+  const sequences: Array<[string, () => PolygonSoup, Array<[string, number]>]> = [
+    ['cube', cube, [['collapse', 1], ['merge', 7], ['merge', 5], ['collapse', 10], ['split', 11]]],
+    ['cube', cube, [['collapse', 7], ['merge', 10], ['merge', 8], ['collapse', 6], ['collapse', 5]]],
+    ['tetrahedron', tetrahedron, [['split', 1], ['split', 3], ['collapse', 2], ['merge', 4], ['collapse', 5], ['collapse', 1], ['collapse', 0]]],
+  ];
+  for (const [name, shape, steps] of sequences) {
+    it(`keeps the ${name} valid through ${steps.map(([op, e]) => `${op} e${e}`).join(', ')}, refusing the merge that would break it`, () => {
+      const mesh = meshOf(shape());
+      let refused = '';
+      for (const [op, e] of steps) {
+        const why = op === 'merge' ? canMergeFaces(mesh, e) : op === 'collapse' ? canCollapseEdge(mesh, e) : canSplitEdge(mesh, e);
+        if (why) {
+          refused = `${op} e${e}: ${why}`;
+          break;
+        }
+        if (op === 'merge') checkedEdit(mesh, (m) => mergeFaces(m, e));
+        else if (op === 'collapse') checkedEdit(mesh, (m) => collapseEdge(m, e));
+        else checkedEdit(mesh, (m) => splitEdge(m, e));
+      }
+      expect(refused).toMatch(/^merge e\d+: f\d+ and f\d+ also share v\d+: the merged face would pass through v\d+ twice$/);
+    });
+  }
 });
 
 describe('triangulatePolygon', () => {

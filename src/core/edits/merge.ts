@@ -10,10 +10,11 @@
  *      a ────────► b ────────► y          a ────────► b ────────► y
  * ```
  * (here h = 2e runs b → c with f0 on its left.) What is allowed: two *different* faces that share
- * exactly this one edge. Refused: a boundary edge (only one face), an edge with the same face on
- * both sides, and two faces that also share another edge; in that last case the merged face
- * would border itself along the other edge, which is how a dangling edge or a vertex hanging on
- * one edge would appear. The merged face may be non-convex or non-planar.
+ * this one edge and no other corner than its two ends. Refused: a boundary edge (only one face),
+ * an edge with the same face on both sides, and two faces that also share another corner: the
+ * merged face would pass through that vertex twice, touching itself there (or, when they share
+ * another edge too, bordering itself along a dangling edge) — a face no file can hold, and one
+ * that later edits cannot take apart. The merged face may be non-convex or non-planar.
  */
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
@@ -29,18 +30,21 @@ export interface MergeResult extends EditResult {
 export function canMergeFaces(mesh: HalfedgeMesh, e: number): string | null {
   const missing = missingEdge(mesh, e);
   if (missing) return missing;
-  const { heNext, heFace } = mesh;
+  const { heNext, heVertex, heFace } = mesh;
   const h = 2 * e;
   const f0 = heFace[h];
   const f1 = heFace[h + 1];
   if (f0 === -1 || f1 === -1) return `e${e} is on the boundary: there is no second face to merge f${f0 === -1 ? f1 : f0} with`;
   if (f0 === f1) return `e${e} has f${f0} on both sides: there is nothing to merge`;
-  let g = heNext[h];
-  while (g !== h) {
-    if (heFace[g ^ 1] === f1) {
-      return `f${f0} and f${f1} also share e${g >> 1}: the merged face would border itself along it (a dangling edge or vertex)`;
+  // every corner of f0 but the two ends of e (the loop from h starts at them), against every
+  // corner of f1 but those: faces are small, and this asks no memory
+  for (let g = heNext[heNext[h]], i = 0; g !== h && i < mesh.halfedgeSlots; g = heNext[g], i++) {
+    const v = heVertex[g];
+    for (let k = heNext[heNext[h + 1]], j = 0; k !== h + 1 && j < mesh.halfedgeSlots; k = heNext[k], j++) {
+      if (heVertex[k] === v) {
+        return `f${f0} and f${f1} also share v${v}: the merged face would pass through v${v} twice`;
+      }
     }
-    g = heNext[g];
   }
   return null;
 }
