@@ -187,6 +187,17 @@ describe('triangulateFace', () => {
     for (const f of mesh.faces()) if (mesh.faceDegree(f) === 3) expect(faceArea(mesh, f)).toBeGreaterThan(0.1);
   });
 
+  // in a tetrahedron every two corners are joined: the quad left by erasing one edge has one
+  // diagonal that is an edge already, and ear clipping from corner 0 chose it
+  it('chooses the diagonal no edge holds yet: the quad of a tetrahedron with one edge erased', () => {
+    const mesh = meshOf(tetrahedron());
+    const erased = [mesh.heVertex[2], mesh.heVertex[3]];
+    checkedEdit(mesh, (m) => mergeFaces(m, 1));
+    checkedEdit(mesh, (m) => triangulateFace(m, 0));
+    expect(meshStats(mesh)).toMatchObject({ vertices: 4, edges: 6, faces: 4, boundaryLoops: 0, eulerCharacteristic: 2 });
+    expect(edgeBetween(mesh, erased[0]!, erased[1]!)).not.toBe(-1);
+  });
+
   it('leaves a triangle as it is', () => {
     const mesh = meshOf(tetrahedron());
     expect(checkedEdit(mesh, (m) => triangulateFace(m, 0)).changes).toEqual([]);

@@ -88,6 +88,16 @@ describe('splitEdgeTriangulated', () => {
     expect(mesh.isBoundaryVertex(vertex)).toBe(true);
   });
 
+  it('refuses two triangles on the same three corners: the new vertex would be joined to the third twice', () => {
+    // a pillow: the triangles (0 1 2) and (1 0 2) share all three edges
+    const mesh = meshOf(soupFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2], [1, 0, 2]]));
+    const e = edgeBetween(mesh, 0, 1);
+    expect(canSplitEdgeTriangulated(mesh, e)).toBe(`the triangles beside e${e} (f0, f1) have the same third corner v2: the new vertex would be joined to it twice`);
+    expect(() => splitEdgeTriangulated(mesh, e)).toThrow(TopologyError);
+    // the plain split still applies: it joins nothing
+    checkedEdit(mesh, (m) => splitEdge(m, e));
+  });
+
   it('refuses an edge beside a quad', () => {
     const mesh = meshOf(cube());
     expect(canSplitEdgeTriangulated(mesh, 0)).toMatch(/^f\d beside e0 has 4 sides: the triangulated split needs triangles \(use splitEdge\)$/);

@@ -45,8 +45,10 @@ export function canSplitEdge(mesh: HalfedgeMesh, e: number, t = 0.5): string | n
 }
 
 /**
- * Why edge `e` cannot be split with its neighbouring triangles, or null: as `canSplitEdge`, and
- * each face beside `e` must be a triangle.
+ * Why edge `e` cannot be split with its neighbouring triangles, or null: as `canSplitEdge`, each
+ * face beside `e` must be a triangle, and the two triangles may not have the same third corner
+ * (two triangles on the same three corners, as in a pillow): both would join the new vertex to
+ * it, a second edge between the same two vertices.
  */
 export function canSplitEdgeTriangulated(mesh: HalfedgeMesh, e: number, t = 0.5): string | null {
   const why = canSplitEdge(mesh, e, t);
@@ -55,6 +57,11 @@ export function canSplitEdgeTriangulated(mesh: HalfedgeMesh, e: number, t = 0.5)
     if (mesh.heFace[h] !== -1 && !isTriangleLoop(mesh, h)) {
       return `f${mesh.heFace[h]} beside e${e} has ${mesh.loopLength(h)} sides: the triangulated split needs triangles (use splitEdge)`;
     }
+  }
+  const { heFace, hePrev, heVertex } = mesh;
+  const c = heVertex[hePrev[2 * e]];
+  if (heFace[2 * e] !== -1 && heFace[2 * e + 1] !== -1 && c === heVertex[hePrev[2 * e + 1]]) {
+    return `the triangles beside e${e} (f${heFace[2 * e]}, f${heFace[2 * e + 1]}) have the same third corner v${c}: the new vertex would be joined to it twice`;
   }
   return null;
 }

@@ -29,7 +29,7 @@ import earcut from 'earcut';
 import { TopologyError } from '../errors.js';
 import { faceVectorArea } from '../geometry.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { missingFace } from './find.js';
+import { halfedgeFromTo, missingFace } from './find.js';
 import { type EditOptions, type EditResult, PointerWriter } from './writer.js';
 
 /**
@@ -344,15 +344,40 @@ function planFace(mesh: HalfedgeMesh, f: number): { ring: number[]; triangles: U
     coords[2 * i] = x * u[0] + y * u[1] + z * u[2];
     coords[2 * i + 1] = x * v[0] + y * v[1] + z * v[2];
   }
-  const triangles = triangulatePolygon(coords, []);
-  if (!triangles) return `f${f}'s outline, seen along its normal, crosses itself or has no area: ear clipping cannot triangulate it`;
-  return { ring, triangles };
+  // ear clipping starts its search at the first corner: from another start it may choose other
+  // diagonals, which is the way round one that joins two corners already joined outside the face
+  let clash = '';
+  for (let first = 0; first < ring.length; first++) {
+    const rotated = Float64Array.from({ length: coords.length }, (_, k) => coords[(k + 2 * first) % coords.length]);
+    const triangles = triangulatePolygon(rotated, []);
+    if (!triangles) return `f${f}'s outline, seen along its normal, crosses itself or has no area: ear clipping cannot triangulate it`;
+    for (let k = 0; k < triangles.length; k++) triangles[k] = (triangles[k] + first) % ring.length;
+    clash = existingDiagonal(mesh, ring, triangles);
+    if (!clash) return { ring, triangles };
+  }
+  return `every triangulation of f${f} tried would join ${clash} a second time: a second edge between two vertices is not allowed`;
+}
+
+/** "v3 and v7 (already joined by e12)" for the first diagonal of `triangles` that is an edge already, or ''. */
+function existingDiagonal(mesh: HalfedgeMesh, ring: number[], triangles: Uint32Array): string {
+  const n = ring.length;
+  for (let k = 0; k < triangles.length; k++) {
+    const x = triangles[k];
+    const y = triangles[k % 3 === 2 ? k - 2 : k + 1];
+    if ((x + 1) % n === y || (y + 1) % n === x) continue; // a side of the face
+    const u = mesh.heVertex[ring[x]];
+    const v = mesh.heVertex[ring[y]];
+    const existing = halfedgeFromTo(mesh, u, v);
+    if (existing !== -1) return `v${u} and v${v} (already joined by e${existing >> 1})`;
+  }
+  return '';
 }
 
 /**
  * Why face `f` cannot be triangulated, or null when it can. A triangle can (it stays as it is);
- * refused: a face with two corners at the same point, a face of zero area, and one whose outline
- * crosses itself seen along its normal.
+ * refused: a face with two corners at the same point, a face of zero area, one whose outline
+ * crosses itself seen along its normal, and one whose every triangulation tried (ear clipping
+ * from each corner) has a diagonal joining two vertices that an edge outside the face already joins.
  */
 export function canTriangulateFace(mesh: HalfedgeMesh, f: number): string | null {
   const plan = planFace(mesh, f);
