@@ -11,6 +11,7 @@ import {
   InvalidInputError,
   type PolygonSoup,
   singleTriangle,
+  soupFromArrays,
   strip,
   tetrahedron,
   TopologyError,
@@ -174,6 +175,20 @@ describe('preconditions', () => {
     expect(cannotSubdivide(meshOf(flower()), 'sqrt3')).toBe('√3 subdivision needs triangles; f0 is a pentagon. Triangulate the mesh first.');
     expect(() => butterflySubdivision(mesh)).toThrow(TopologyError);
     expect(() => sqrt3Subdivision(mesh)).toThrow(TopologyError);
+  });
+
+  // two triangles on the same three corners: Loop would join the midpoints of two shared edges
+  // once inside each triangle, a second edge between the same two vertices
+  it('refuses, for Loop, Butterfly and √3, two triangles that share two edges; Catmull-Clark takes them', () => {
+    const pillow = () => meshOf(soupFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0], [[0, 1, 2], [1, 0, 2]]));
+    for (const scheme of ['loop', 'butterfly', 'sqrt3'] as const) {
+      const mesh = pillow();
+      expect(cannotSubdivide(mesh, scheme)).toMatch(/cannot split f0 and f1: they share two edges \(the same three corners\), so it would join two new vertices twice\.$/);
+      expect(() => subdivide(mesh, scheme, 1)).toThrow(TopologyError);
+    }
+    const mesh = pillow();
+    subdivide(mesh, 'catmull-clark', 1);
+    expect(validate(mesh)).toEqual([]);
   });
 
   it('lets Catmull-Clark take any polygons, and every scheme take triangles', () => {

@@ -19,7 +19,8 @@ const schemeNames: Record<SubdivisionScheme, string> = {
 
 /**
  * Null when `scheme` applies to `mesh`, else a sentence saying why not. Catmull-Clark takes any
- * polygons; Loop, Butterfly and √3 need triangles.
+ * polygons; Loop, Butterfly and √3 need triangles, no two of them sharing two edges (see
+ * `twoTrianglesOnTwoEdges`).
  * @example cannotSubdivide(buildMesh(cube()).mesh, 'loop')
  *   // "Loop subdivision needs triangles; f0 is a quad. Triangulate the mesh first."
  * @throws InvalidInputError for an unknown scheme.
@@ -28,7 +29,30 @@ export function cannotSubdivide(mesh: HalfedgeMesh, scheme: SubdivisionScheme): 
   if (!Object.hasOwn(schemeNames, scheme)) unknownScheme(scheme);
   if (scheme === 'catmull-clark') return null;
   const reason = needsTriangles(mesh, schemeNames[scheme]);
-  return reason && `${reason} Triangulate the mesh first.`;
+  if (reason) return `${reason} Triangulate the mesh first.`;
+  return twoTrianglesOnTwoEdges(mesh, schemeNames[scheme]);
+}
+
+/**
+ * Two triangles that share two edges (so all three corners, as in a pillow of two triangles)
+ * cannot be split by Loop, Butterfly or √3: Loop and Butterfly join the midpoints of the two
+ * shared edges inside each triangle, and √3 joins the two triangles' centres across each shared
+ * edge, twice over — a second edge between the same two vertices, which no file can hold. One
+ * pass over the faces, looking across each one's three edges.
+ */
+function twoTrianglesOnTwoEdges(mesh: HalfedgeMesh, scheme: string): string | null {
+  const { heNext, heFace, fHalfedge } = mesh;
+  for (const f of mesh.faces()) {
+    const h = fHalfedge[f];
+    const across = [heFace[h ^ 1], heFace[heNext[h] ^ 1], heFace[heNext[heNext[h]] ^ 1]];
+    for (let k = 0; k < 3; k++) {
+      const g = across[k];
+      if (g !== -1 && g === across[(k + 1) % 3]) {
+        return `${scheme} cannot split f${f} and f${g}: they share two edges (the same three corners), so it would join two new vertices twice.`;
+      }
+    }
+  }
+  return null;
 }
 
 /** Throws the error for a scheme name outside `SubdivisionScheme` (from untyped callers). */

@@ -1,0 +1,247 @@
+/**
+ * The edit-sequence fuzzer: random meshes put through random sequences of every local edit and
+ * every operation, as fast-check commands. Each command asks its predicate first (`canFlipEdge`,
+ * `cannotSubdivide`, …); when refused, the mesh must be untouched; when allowed, it must not throw,
+ * and after it `validate()` finds nothing, an edit's reported changes are exactly the pointers
+ * that changed, and the mesh survives save and reload (`reload.ts`).
+ *
+ * Case (seed, index) runs one fast-check run whose seed mixes the two numbers (`caseSeed`), so
+ * a failure replays from them alone; fast-check shrinks it first, and the failure's input is the
+ * shrunk sequence, written as the steps that ran ("cube; collapse e7; merge e10; …").
+ */
+import fc from 'fast-check';
+import { buildMesh } from '../src/core/build.js';
+import { cutMesh } from '../src/core/cut/index.js';
+import { cannotDecimate, decimate } from '../src/core/decimation/index.js';
+import { diffPointers } from '../src/core/diff.js';
+import {
+  canCollapseEdge,
+  canFlipEdge,
+  canMergeFaces,
+  canPokeFace,
+  canSplitEdge,
+  canSplitEdgeTriangulated,
+  canSplitFace,
+  canTriangulateFace,
+  collapseEdge,
+  type EditResult,
+  flipEdge,
+  mergeFaces,
+  pokeFace,
+  splitEdge,
+  splitEdgeTriangulated,
+  splitFace,
+  triangulateFace,
+  triangulateMesh,
+} from '../src/core/edits/index.js';
+import type { HalfedgeMesh } from '../src/core/mesh.js';
+import { annulus, bowTie, cube, disk, fan, grid, moebiusStrip, strip, tetrahedron, torus, uvSphere } from '../src/core/shapes.js';
+import { cannotSmooth, type SmoothingMethod, smooth } from '../src/core/smoothing/index.js';
+import type { PolygonSoup } from '../src/core/soup.js';
+import { cannotSubdivide, type SubdivisionScheme, subdivide } from '../src/core/subdivision/index.js';
+import { validate } from '../src/core/validate.js';
+import { reloadDifference } from './reload.js';
+import type { CaseOutcome, FuzzTarget } from './target.js';
+
+/** Start meshes: closed and open, triangles, quads and polygons, repaired ones too. */
+const shapes: Record<string, () => PolygonSoup> = {
+  tetrahedron,
+  cube,
+  'torus 4×3': () => torus(4, 3),
+  'sphere 4×6': () => uvSphere(4, 6),
+  'fan 5': () => fan(5),
+  'strip 3': () => strip(3),
+  'annulus 6': () => annulus(6),
+  'disk 2': () => disk(2),
+  'quad grid 3×2': () => grid(3, 2, true),
+  'Möbius strip 6': () => moebiusStrip(6),
+  'bow tie': bowTie,
+};
+
+/** Operations run only on meshes up to this many faces, so a case stays within milliseconds. */
+const MAX_FACES_FOR_OPERATIONS = 400;
+
+/** What a step found wrong: ends the case as a failure. */
+class StepFailure extends Error {}
+
+interface Real {
+  mesh: HalfedgeMesh;
+}
+
+/** The `k`-th live element (by `pick` modulo the count), or -1 when there is none. */
+function nth(ids: Generator<number>, pick: number): number {
+  const list = [...ids];
+  return list.length === 0 ? -1 : list[pick % list.length];
+}
+
+/**
+ * One step: `plan` looks at the mesh and returns the step's name, why it is refused (or null),
+ * and how to do it. A refused step must leave the mesh untouched; an allowed one is checked.
+ */
+export type Plan = { name: string; refusal: string | null; apply: () => EditResult | void } | null;
+
+export class Step implements fc.Command<object, Real> {
+  private ran = '';
+  constructor(
+    private readonly label: string,
+    private readonly plan: (mesh: HalfedgeMesh) => Plan,
+  ) {}
+  check(): boolean {
+    return true;
+  }
+  run(_model: object, real: Real): void {
+    const { mesh } = real;
+    const plan = this.plan(mesh);
+    if (!plan) {
+      this.ran = `${this.label} (nothing to apply it to)`;
+      return;
+    }
+    this.ran = plan.name;
+    const before = mesh.clone();
+    if (plan.refusal !== null) {
+      const changed = diffPointers(before, mesh, 1).total;
+      if (changed > 0 || mesh.nFaces !== before.nFaces) throw new StepFailure(`${plan.name} was refused but changed the mesh`);
+      return;
+    }
+    let result: EditResult | void;
+    try {
+      result = plan.apply();
+    } catch (error) {
+      throw new StepFailure(`${plan.name}: its predicate allowed it, then it threw ${(error as Error).stack ?? error}`);
+    }
+    const problems = validate(mesh, { limit: 3 });
+    if (problems.length > 0) throw new StepFailure(`${plan.name} left an invalid mesh: ${problems.map((p) => p.message).join('; ')}`);
+    if (result) {
+      const found = JSON.stringify(diffPointers(before, mesh, Infinity).changes);
+      if (JSON.stringify(result.changes) !== found) throw new StepFailure(`${plan.name} reported other pointer changes than it made`);
+    }
+    const difference = reloadDifference(mesh);
+    if (difference) throw new StepFailure(`${plan.name}: saved and read back, ${difference}`);
+  }
+  toString(): string {
+    return this.ran || this.label;
+  }
+}
+
+const pick = fc.nat();
+const fraction = fc.double({ min: 0.05, max: 0.95, noNaN: true });
+
+/** Every edit and operation, each with the choices it needs. */
+export const editCommands: Array<fc.Arbitrary<Step>> = [
+  pick.map((k) => new Step('flip', (m) => edgeStep(m, k, 'flip', canFlipEdge, flipEdge))),
+  fc.tuple(pick, fraction).map(([k, t]) => new Step('split', (m) => edgeStep(m, k, 'split', (mesh, e) => canSplitEdge(mesh, e, t), (mesh, e) => splitEdge(mesh, e, { t })))),
+  pick.map((k) => new Step('split-triangulated', (m) => edgeStep(m, k, 'split-triangulated', canSplitEdgeTriangulated, splitEdgeTriangulated))),
+  pick.map((k) => new Step('collapse', (m) => edgeStep(m, k, 'collapse', canCollapseEdge, collapseEdge))),
+  pick.map((k) => new Step('merge', (m) => edgeStep(m, k, 'merge', canMergeFaces, mergeFaces))),
+  pick.map((k) => new Step('poke', (m) => faceStep(m, k, 'poke', canPokeFace, pokeFace))),
+  pick.map((k) => new Step('triangulate', (m) => faceStep(m, k, 'triangulate', canTriangulateFace, triangulateFace))),
+  fc.tuple(pick, pick, pick).map(([k, i, j]) => new Step('split-face', (m) => splitFaceStep(m, k, i, j))),
+  fc.constant(null).map(() => new Step('triangulate-all', (m) => ({ name: 'triangulate-all', refusal: null, apply: () => void triangulateMesh(m, { record: false }) }))),
+  fc.constantFrom<SubdivisionScheme>('loop', 'catmull-clark', 'butterfly', 'sqrt3').map(
+    (scheme) => new Step(`subdivide ${scheme}`, (m) => operationStep(m, `subdivide ${scheme}`, cannotSubdivide(m, scheme), () => subdivide(m, scheme, 1))),
+  ),
+  fc.tuple(fc.double({ min: -1, max: 1, noNaN: true }), fc.double({ min: -1, max: 1, noNaN: true }), fc.double({ min: -1, max: 1, noNaN: true }), pick, fc.constantFrom('above', 'below', 'both' as const), fc.boolean()).map(
+    ([a, b, c, k, keep, cap]) => new Step('cut', (m) => cutStep(m, [a, b, c], k, keep, cap)),
+  ),
+  fc.tuple(fc.constantFrom<SmoothingMethod>('laplacian', 'cotan', 'taubin'), fc.integer({ min: 1, max: 3 })).map(
+    ([method, iterations]) => new Step(`smooth ${method}`, (m) => operationStep(m, `smooth ${method} ×${iterations}`, cannotSmooth(m, { method }), () => smooth(m, { method, iterations }))),
+  ),
+  fraction.map((share) => new Step('decimate', (m) => decimateStep(m, share))),
+];
+
+function edgeStep(
+  mesh: HalfedgeMesh,
+  k: number,
+  name: string,
+  can: (mesh: HalfedgeMesh, e: number) => string | null,
+  edit: (mesh: HalfedgeMesh, e: number) => EditResult,
+): Plan {
+  const e = nth(mesh.edges(), k);
+  return e === -1 ? null : { name: `${name} e${e}`, refusal: can(mesh, e), apply: () => edit(mesh, e) };
+}
+
+function faceStep(
+  mesh: HalfedgeMesh,
+  k: number,
+  name: string,
+  can: (mesh: HalfedgeMesh, f: number) => string | null,
+  edit: (mesh: HalfedgeMesh, f: number) => EditResult,
+): Plan {
+  const f = nth(mesh.faces(), k);
+  return f === -1 ? null : { name: `${name} f${f}`, refusal: can(mesh, f), apply: () => edit(mesh, f) };
+}
+
+function splitFaceStep(mesh: HalfedgeMesh, k: number, i: number, j: number): Plan {
+  const f = nth(mesh.faces(), k);
+  if (f === -1) return null;
+  const corners: number[] = [];
+  let h = mesh.fHalfedge[f];
+  do {
+    corners.push(mesh.heVertex[h]);
+    h = mesh.heNext[h];
+  } while (h !== mesh.fHalfedge[f] && corners.length <= mesh.halfedgeSlots);
+  const u = corners[i % corners.length];
+  const v = corners[j % corners.length];
+  return { name: `split-face f${f} v${u} v${v}`, refusal: canSplitFace(mesh, f, u, v), apply: () => splitFace(mesh, f, u, v) };
+}
+
+function operationStep(mesh: HalfedgeMesh, name: string, refusal: string | null, apply: () => void): Plan {
+  if (mesh.nFaces > MAX_FACES_FOR_OPERATIONS) return null;
+  return { name, refusal, apply };
+}
+
+/** A plane with the given normal through a vertex of the mesh (so vertices on the plane are common). */
+function cutStep(mesh: HalfedgeMesh, normal: number[], k: number, keep: 'above' | 'below' | 'both', cap: boolean): Plan {
+  const v = nth(mesh.vertices(), k);
+  if (v === -1 || Math.hypot(normal[0], normal[1], normal[2]) < 1e-3) return null;
+  const d = -(normal[0] * mesh.positions[3 * v] + normal[1] * mesh.positions[3 * v + 1] + normal[2] * mesh.positions[3 * v + 2]);
+  const plane: [number, number, number, number] = [normal[0], normal[1], normal[2], d];
+  const name = `cut ${plane.map((x) => +x.toFixed(6)).join(',')} keep ${keep}${cap ? '' : ' no-cap'}`;
+  return operationStep(mesh, name, null, () => void cutMesh(mesh, plane, { keep, cap }));
+}
+
+function decimateStep(mesh: HalfedgeMesh, share: number): Plan {
+  const targetFaces = Math.max(1, Math.floor(share * mesh.nFaces));
+  return operationStep(mesh, `decimate to ${targetFaces} faces`, cannotDecimate(mesh, { targetFaces }), () => decimate(mesh, { targetFaces }));
+}
+
+/**
+ * The case's fast-check seed: seed and index mixed (a multiply-xorshift hash), so neighbouring
+ * indices give unrelated runs and (seed, index) alone replays one.
+ */
+export function caseSeed(seed: number, index: number): number {
+  let x = Math.imul(seed ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(index + 1, 0xc2b2ae35);
+  x = Math.imul(x ^ (x >>> 16), 0x7feb352d);
+  x = Math.imul(x ^ (x >>> 15), 0x846ca68b);
+  return (x ^ (x >>> 16)) | 0;
+}
+
+/**
+ * The fuzz target over `commands` (every edit and operation by default; the tests add a broken
+ * one to see that it is caught).
+ */
+export function editSequenceTarget(commands = editCommands): FuzzTarget {
+  const sequence = fc.record({
+    shape: fc.constantFrom(...Object.keys(shapes)),
+    commands: fc.commands(commands, { maxCommands: 12 }),
+  });
+  const run = ({ shape, commands: steps }: { shape: string; commands: Iterable<fc.Command<object, Real>> }) => {
+    fc.modelRun(() => ({ model: {}, real: { mesh: buildMesh(shapes[shape]()).mesh } }), steps);
+  };
+  return {
+    name: 'edits',
+    runCase(seed: number, index: number): CaseOutcome {
+      const details = fc.check(fc.property(sequence, run), { seed: caseSeed(seed, index), numRuns: 1 });
+      if (!details.failed) return { kind: 'accepted' };
+      const example = details.counterexample?.[0];
+      // the commands come wrapped, marked when they ran: the failing one is the last that did
+      const ran = example ? [...example.commands].filter((c) => (c as { hasRan?: boolean }).hasRan) : [];
+      const input = example ? [example.shape, ...ran.map(String)].join('; ') : '(no counterexample)';
+      const error = details.errorInstance;
+      const reason = error instanceof StepFailure ? error.message : `${(error as Error | undefined)?.stack ?? String(error)}`;
+      return { kind: 'failure', reason, input: `${input}   [fast-check seed ${details.seed}, path ${details.counterexamplePath}]` };
+    },
+  };
+}
+
+export const editsTarget = editSequenceTarget();
