@@ -41,7 +41,7 @@ import type { PolygonSoup } from '../src/core/soup.js';
 import { cannotSubdivide, type SubdivisionScheme, subdivide } from '../src/core/subdivision/index.js';
 import { validate } from '../src/core/validate.js';
 import { reloadDifference } from './reload.js';
-import type { CaseOutcome, FuzzTarget } from './target.js';
+import { type CaseOutcome, caseSeed, type FuzzTarget } from './target.js';
 
 /** Start meshes: closed and open, triangles, quads and polygons, repaired ones too. */
 const shapes: Record<string, () => PolygonSoup> = {
@@ -203,17 +203,6 @@ function cutStep(mesh: HalfedgeMesh, normal: number[], k: number, keep: 'above' 
 function decimateStep(mesh: HalfedgeMesh, share: number): Plan {
   const targetFaces = Math.max(1, Math.floor(share * mesh.nFaces));
   return operationStep(mesh, `decimate to ${targetFaces} faces`, cannotDecimate(mesh, { targetFaces }), () => decimate(mesh, { targetFaces }));
-}
-
-/**
- * The case's fast-check seed: seed and index mixed (a multiply-xorshift hash), so neighbouring
- * indices give unrelated runs and (seed, index) alone replays one.
- */
-export function caseSeed(seed: number, index: number): number {
-  let x = Math.imul(seed ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(index + 1, 0xc2b2ae35);
-  x = Math.imul(x ^ (x >>> 16), 0x7feb352d);
-  x = Math.imul(x ^ (x >>> 15), 0x846ca68b);
-  return (x ^ (x >>> 16)) | 0;
 }
 
 /**

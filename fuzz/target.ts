@@ -20,3 +20,14 @@ export interface FuzzTarget {
   /** Runs case `index` of the stream seeded by `seed`. Catches what the case throws: never throws itself. */
   runCase(seed: number, index: number): CaseOutcome;
 }
+
+/**
+ * A case's own seed: seed and index mixed (a multiply-xorshift hash), so neighbouring
+ * indices give unrelated runs and (seed, index) alone replays one.
+ */
+export function caseSeed(seed: number, index: number): number {
+  let x = Math.imul(seed ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(index + 1, 0xc2b2ae35);
+  x = Math.imul(x ^ (x >>> 16), 0x7feb352d);
+  x = Math.imul(x ^ (x >>> 15), 0x846ca68b);
+  return (x ^ (x >>> 16)) | 0;
+}

@@ -1,0 +1,6 @@
+/** The fuzz targets `npm run fuzz` knows, by name (`--only NAME`). */
+import { editsTarget } from './edits.js';
+import { corpusTarget, readersTarget } from './readers.js';
+import type { FuzzTarget } from './target.js';
+
+export const targets: FuzzTarget[] = [readersTarget, corpusTarget, editsTarget];
