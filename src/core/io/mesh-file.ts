@@ -3,7 +3,6 @@
  * triangulated, with their attributes), the counts the file states, its comments, and plain
  * sentences about anything the reader noticed or skipped, for the app to show beside the mesh.
  */
-import { plural } from '../report.js';
 import type { PolygonSoup } from '../soup.js';
 
 export type MeshFormat = 'ply' | 'off' | 'obj' | 'stl';
@@ -37,18 +36,3 @@ export type Progress = (fraction: number) => void;
  * often enough for ten updates a second on the largest files, rarely enough to cost nothing.
  */
 export const PROGRESS_ROWS = 0x3fff;
-
-/** Binary data can hold NaN or infinity (text readers refuse them): note which vertex first has one. */
-export function noteNonFinitePositions(positions: ArrayLike<number>, notes: string[]): void {
-  let count = 0;
-  let first = -1;
-  for (let i = 0; i + 2 < positions.length; i += 3) {
-    if (Number.isFinite(positions[i] + positions[i + 1] + positions[i + 2])) continue;
-    if (first < 0) first = i / 3;
-    count++;
-  }
-  if (count > 0) {
-    const all = plural(count, 'such vertex', 'such vertices');
-    notes.push(`vertex ${first} has a coordinate that is NaN or infinite (${all} in all)`);
-  }
-}

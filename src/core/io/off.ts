@@ -23,7 +23,7 @@ import { plural } from '../report.js';
 import type { PolygonSoup, SoupAttribute } from '../soup.js';
 import { BinaryReader } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type MeshFile, noteNonFinitePositions, type Progress, PROGRESS_ROWS } from './mesh-file.js';
+import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { TextScanner } from './text.js';
 
 /** `[ST][C][N][4][n]OFF`, possibly with the counts glued on (`OFF8 6 0`). */
@@ -232,7 +232,6 @@ class OffMesh {
     }
     const faceCount = this.faceStarts.length - 1;
     if (vertexCount > 0 && faceCount === 0) notes.push('no faces: loaded as a point set');
-    noteNonFinitePositions(this.positions, notes);
     return {
       positions: this.positions,
       faceStarts: this.faceStarts,

@@ -39,7 +39,7 @@ import { plural } from '../report.js';
 import type { SoupAttribute } from '../soup.js';
 import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type Encoding, type MeshFile, noteNonFinitePositions, type Progress, PROGRESS_ROWS } from './mesh-file.js';
+import { type Encoding, type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { quoted, someOf } from './names.js';
 import { TextScanner } from './text.js';
 
@@ -693,7 +693,6 @@ function assemble(header: PlyHeader, plan: Plan): MeshFile {
   }
   const faceCount = faceStarts.length - 1;
   if (vertexCount > 0 && faceCount === 0) notes.push('no faces: loaded as a point set');
-  noteNonFinitePositions(positions, notes);
   return {
     format: 'ply',
     encoding: header.encoding,

@@ -23,7 +23,7 @@
 import { plural } from '../report.js';
 import { BinaryReader, viewOf } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type MeshFile, noteNonFinitePositions, type Progress, PROGRESS_ROWS } from './mesh-file.js';
+import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { TextScanner, decodeText } from './text.js';
 
 const HEADER_BYTES = 80;
@@ -57,7 +57,6 @@ export function readStl(bytes: Uint8Array, progress: Progress): MeshFile {
   const vertexCount = positions.length / 3;
   const welded = `${plural(cornerCount, 'STL corner')} into ${plural(vertexCount, 'vertex', 'vertices')}`;
   notes.push(`welded ${welded} (${cornerCount - vertexCount} merged)`);
-  noteNonFinitePositions(positions, notes);
   const faceCount = faceStarts.length - 1;
   return {
     format: 'stl',

@@ -9,6 +9,7 @@ import { attributeArrayTypes, type AttributeArray, type AttributeSet, type Attri
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import type { PolygonSoup, SoupAttribute } from '../soup.js';
+import { firstNonFiniteValue } from './finite.js';
 import { writeObj } from './write-obj.js';
 import { writeOff } from './write-off.js';
 import { writePly } from './write-ply.js';
@@ -20,7 +21,8 @@ export type WriteFormat = 'ply' | 'ply-binary' | 'off' | 'obj';
  * out and the vertices renumbered densely.
  * @example
  *   const bytes = writeMesh(mesh, writeFormatFromFileName('out.ply') ?? 'ply');
- * @throws InvalidInputError when a face loop does not close or uses a deleted vertex.
+ * @throws InvalidInputError when a face loop does not close or uses a deleted vertex, or a value is
+ *   NaN or infinite.
  */
 export function writeMesh(mesh: HalfedgeMesh, format: WriteFormat): Uint8Array {
   return writeSoup(meshToSoup(mesh), format);
@@ -30,8 +32,11 @@ export function writeMesh(mesh: HalfedgeMesh, format: WriteFormat): Uint8Array {
  * Writes a polygon soup, with the attributes the format can carry.
  * @example
  *   const bytes = writeSoup(uvSphere(8, 16), 'ply-binary');
+ * @throws InvalidInputError when a value is NaN or infinite: no reader takes it back.
  */
 export function writeSoup(soup: PolygonSoup, format: WriteFormat): Uint8Array {
+  const nonFinite = firstNonFiniteValue(soup);
+  if (nonFinite) throw new InvalidInputError(`cannot write the mesh: ${nonFinite}; no reader would take it back`);
   switch (format) {
     case 'ply':
       return writePly(soup, 'ascii');
