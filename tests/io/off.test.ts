@@ -22,6 +22,28 @@ describe('OFF variants', () => {
     }
   });
 
+  // as real files have them: each face's indices on lines of their own, blank lines between faces
+  it('reads OFF as a stream of numbers: faces, vertices and counts over several lines', () => {
+    const faces = '4\n0\n1\n2\n3\n\n3\n0\n3\n4\n\n';
+    expect(faceLists(read(`OFF\n5 2 0\n${fivePoints}${faces}`).soup)).toEqual(quadAndTriangle);
+    const file = read(`OFF\n5\n2\n0 0\n0\n1 0 0\n1 1\n0\n0 1 0\n-1\n0.5\n0\n4 0 1\n2 3\n3 0 3 4 0.5 0.5 0.5\n`);
+    expect(faceLists(file.soup)).toEqual(quadAndTriangle);
+    expect(Array.from(file.soup.positions)).toEqual([0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, -1, 0.5, 0]);
+    // a face on a line of its own keeps its colour; the face over two lines has none
+    expect(Array.from(attribute(file.soup.faceAttributes, 'color').data)).toEqual([0, 0, 0, 0.5, 0.5, 0.5]);
+  });
+
+  it('reads a COFF whose faces go on over several lines, each ending at its last index', () => {
+    // vertex 2 goes on onto the next line too: it takes the numbers COFF needs (x y z r g b)
+    const source = 'COFF\n3 2 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0\n0 0 255\n3\n0 1 2\n3 2 1\n0\n';
+    const file = read(source);
+    expect(faceLists(file.soup)).toEqual([
+      [0, 1, 2],
+      [2, 1, 0],
+    ]);
+    expect(Array.from(attribute(file.soup.vertexAttributes, 'color').data)).toEqual([255, 0, 0, 0, 255, 0, 0, 0, 255]);
+  });
+
   it('skips # comments anywhere: before the keyword, between keyword and counts, after values, and blank lines', () => {
     const source =
       '# made by hand\n\nOFF # keyword\n# counts next\n\n5 2 7 # edges ignored\n' +
@@ -68,10 +90,17 @@ describe('OFF variants', () => {
     expect(three.counts).toEqual({ vertices: 3, faces: 1 });
   });
 
-  it('refuses vertices that cannot be 3D: 4 or more dimensions, or a point at infinity', () => {
-    expect(parseError(() => read('nOFF\n4\n1 0 0\n0 0 0 0\n')).message).toBe(
-      'off: line 1, column 1: nOFF vertices have 4 coordinates: only meshes in 3D (or 2D) can be read',
-    );
+  it('reads nOFF of any dimension: beyond 3, x, y and z are kept; 4nOFF divides by the last', () => {
+    const five = read('nOFF\n5\n3 1 0\n1 2 3 4 5\n6 7 8 9 10\n0 1 0 0 0\n3 0 1 2\n');
+    expect(Array.from(five.soup.positions)).toEqual([1, 2, 3, 6, 7, 8, 0, 1, 0]);
+    expect(five.notes).toContain('nOFF vertices have 5 coordinates: kept x, y and z, dropped the other 2');
+    const homogeneous = read('4nOFF 4\n3 1 0\n2 4 6 8 2\n1 1 1 1 1\n0 2 0 0 2\n3 0 1 2\n');
+    expect(Array.from(homogeneous.soup.positions)).toEqual([1, 2, 3, 1, 1, 1, 0, 1, 0]);
+    expect(parseError(() => read('nOFF\n0\n3 1 0\n')).message).toBe('off: line 2, column 1: the dimension must be at least 1, not 0');
+    expect(parseError(() => read('nOFF 999999\n1 0 0\n0\n')).message).toMatch(/the dimension 999999 is more numbers than the whole file holds/);
+  });
+
+  it('refuses a point at infinity', () => {
     expect(parseError(() => read('4OFF\n2 0 0\n0 0 0 1\n1 1 1 0\n')).message).toBe(
       'off: line 4, column 8: vertex 1 has w = 0: a point at infinity has no place in a mesh',
     );
@@ -128,6 +157,30 @@ describe('OFF BINARY', () => {
     return bytes;
   }
 
+  /** A Geomview binary OFF, big-endian: the header line, then int32 ('i') and float32 ('f') words. */
+  function geomviewBinary(header: string, words: Array<['i' | 'f', number]>): Uint8Array {
+    const head = new TextEncoder().encode(`${header}\n`);
+    const bytes = new Uint8Array(head.length + 4 * words.length);
+    bytes.set(head);
+    const view = new DataView(bytes.buffer);
+    words.forEach(([kind, x], i) => (kind === 'i' ? view.setInt32(head.length + 4 * i, x) : view.setFloat32(head.length + 4 * i, x)));
+    return bytes;
+  }
+  const i = (x: number): ['i', number] => ['i', x];
+  const f = (x: number): ['f', number] => ['f', x];
+  const triangle = [i(3), i(0), i(1), i(2), i(0)];
+
+  it('reads nOFF BINARY (the dimension an int32 before the counts), 4OFF BINARY and COFF BINARY (RGBA floats)', () => {
+    const flat = read(geomviewBinary('nOFF BINARY', [i(2), i(3), i(1), i(0), f(0), f(0), f(1), f(0), f(0), f(1), ...triangle]));
+    expect(Array.from(flat.soup.positions)).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    const homogeneous = read(geomviewBinary('4OFF BINARY', [i(3), i(1), i(0), ...[0, 0, 0, 1, 2, 0, 0, 2, 0, 4, 0, 4].map(f), ...triangle]));
+    expect(Array.from(homogeneous.soup.positions)).toEqual([0, 0, 0, 1, 0, 0, 0, 1, 0]);
+    const colours = [1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 0.5];
+    const rows = [0, 1, 2].flatMap((v) => [...[v === 1 ? 1 : 0, v === 2 ? 1 : 0, 0].map(f), ...colours.slice(4 * v, 4 * v + 4).map(f)]);
+    const coloured = read(geomviewBinary('COFF BINARY', [i(3), i(1), i(0), ...rows, ...triangle]));
+    expect(Array.from(attribute(coloured.soup.vertexAttributes, 'color').data)).toEqual(colours);
+  });
+
   it('reads the big-endian layout of the Geomview spec, with face colour counts', () => {
     const file = read(binaryOff(false, true, [[1, 0, 0], []]));
     expect(file.encoding).toBe('binary_big_endian');
@@ -152,9 +205,18 @@ describe('OFF BINARY', () => {
 });
 
 describe('malformed OFF', () => {
+  // OFF is a stream of numbers, so a face short of an index takes the next face's count for it:
+  // the error shows further on, and names the face that went on over lines
   it('says when a face lists fewer indices than it announces', () => {
     const error = parseError(() => read(`OFF\n5 2 0\n${fivePoints}5 0 1 2 3\n3 0 3 4\n`));
-    expect(error.message).toBe('off: line 8, column 10: face 0 announces 5 corners but lists 4 vertex ids');
+    // face 0 takes 3 from line 9 as its fifth index, and 0 3 4 as its colour
+    expect(error.message).toBe(
+      'off: line 10, column 1: the file ends after 1 of 2 faces ' +
+        '(note: face 0 went on from line 8 onto line 9; if it should not, it lists too few numbers)',
+    );
+    expect(parseError(() => read(`OFF\n5 1 0\n${fivePoints}5 0 1 2 3\n`)).message).toBe(
+      'off: line 9, column 1: the file ends inside face 0, which announces 5 corners but lists 4 vertex ids',
+    );
   });
 
   it('names an out-of-range vertex index with its line, column and face', () => {
@@ -181,7 +243,8 @@ describe('malformed OFF', () => {
 
   it('refuses a vertex with too few coordinates, and junk where a number belongs', () => {
     expect(parseError(() => read('OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n')).message).toBe(
-      'off: line 4, column 4: vertex 1 has 2 numbers, but OFF needs 3 coordinates',
+      'off: line 6, column 3: face 0 has 0 corners; a face needs at least one ' +
+        '(note: vertex 1 went on from line 4 onto line 5; if it should not, it lists too few numbers)',
     );
     expect(parseError(() => read('OFF\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n')).message).toBe(
       "off: line 4, column 5: expected a number, found 'zero'",

@@ -1,8 +1,8 @@
 /**
- * OFF, Geomview's Object File Format: a keyword, the counts, one vertex a line, one face a line.
+ * OFF, Geomview's Object File Format: a keyword, the counts, the vertices, the faces.
  *
  * ```
- * OFF                     [ST][C][N][4][n]OFF: the prefixes say what each vertex line carries
+ * OFF                     [ST][C][N][4][n]OFF: the prefixes say what each vertex carries
  * 8 6 12                  vertices, faces, edges (the edge count is never used)
  * 0 0 0                   x y z [nx ny nz] [r g b [a]] [s t]
  * …
@@ -10,13 +10,23 @@
  * ```
  *
  * The prefixes: `ST` texture coordinates, `C` colours, `N` normals, `4` a fourth, homogeneous
- * coordinate (x y z w, meaning x/w y/w z/w), `n` a dimension given after the keyword. A face
- * colour is 0 numbers (none), 1 (an index into a colour map, ignored), or 3–4 (RGB[A]): integers
- * 0…255 or reals 0…1, kept as uint8 or float32 accordingly. `#` starts a comment anywhere.
+ * coordinate (x y z w, meaning x/w y/w z/w), `n` a dimension given after the keyword (any: a
+ * vertex of fewer than 3 coordinates gets zeros, of more keeps x, y, z, and a note says how many
+ * were dropped). A face colour is 0 numbers (none), 1 (an index into a colour map, ignored), or
+ * 3–4 (RGB[A]): integers 0…255 or reals 0…1, kept as uint8 or float32 accordingly. `#` starts a
+ * comment anywhere, which ends with its line.
  *
- * `OFF BINARY` is followed by the same data as 32-bit ints and floats. Geomview's spec makes it
- * big-endian with a colour count after each face; pmp-library writes it little-endian without
- * the count. Each layout is tried; the one that uses the file up exactly wins.
+ * OFF is a stream of numbers: files write one vertex or face a line, but some put each index of
+ * a face on a line of its own, with blank lines between faces. So a vertex whose line ends before
+ * the numbers its keyword needs goes on over the next lines (and then takes exactly those
+ * numbers), and a face's indices may run over several lines. Line ends matter in one place, as in
+ * Geomview's own reader: a face's colour runs from its last index to the end of that line. Since a
+ * line short of a number reads the same way, an error after such an element names the first one.
+ *
+ * `OFF BINARY` is followed by the same data as 32-bit ints and floats (for `nOFF BINARY`, the
+ * dimension first, as an int; colours as four floats). Geomview's spec makes it big-endian with a
+ * colour count after each face; pmp-library writes it little-endian without the count. Each
+ * layout is tried; the one that uses the file up exactly wins.
  */
 import { ParseError } from '../errors.js';
 import { plural } from '../report.js';
@@ -38,10 +48,26 @@ interface OffShape {
   homogeneous: boolean;
   /** Coordinates before the homogeneous one: 3 unless `nOFF` says otherwise. */
   dimension: number;
+  /** `nOFF`: the dimension follows the keyword. */
+  dimensionFollows: boolean;
 }
 
-/** Numbers one vertex or face line may carry at most. */
-const MAX_VALUES_PER_LINE = 32;
+/**
+ * A dimension of at least 1, and no more numbers than the file has bytes (each vertex has that
+ * many, and `values` arrays are made that long).
+ */
+function checkDimension(dimension: number, fileBytes: number, fail: (reason: string) => never): void {
+  if (dimension < 1) fail(`the dimension must be at least 1, not ${dimension}`);
+  if (dimension > fileBytes) fail(`the dimension ${dimension} is more numbers than the whole file holds`);
+}
+
+/** Numbers a vertex or face line may carry beyond the most its keyword and dimension need. */
+const SPARE_VALUES_PER_LINE = 32;
+
+/** The most numbers one vertex line of `shape` may carry: its coordinates, normal, colour, texture coordinates and spares. */
+function maxValuesPerLine(shape: OffShape): number {
+  return shape.dimension + 1 + 3 + 4 + 2 + SPARE_VALUES_PER_LINE;
+}
 
 /**
  * Reads an OFF file (text or `OFF BINARY`) into a polygon soup.
@@ -66,6 +92,7 @@ export function readOff(bytes: Uint8Array, progress: Progress): MeshFile {
     normals: !!match?.[3],
     homogeneous: !!match?.[4],
     dimension: 3,
+    dimensionFollows: !!match?.[5],
   };
   if (match) {
     const glued = word.slice(match[0].length);
@@ -86,21 +113,12 @@ export function readOff(bytes: Uint8Array, progress: Progress): MeshFile {
     scanner.word();
     binary = true;
   }
-  if (match?.[5]) {
-    if (binary) {
-      scanner.fail(`${shape.keyword} BINARY files are not supported (text ${shape.keyword} files are)`);
-    }
+  if (match?.[5] && !binary) {
+    // nOFF: the dimension comes next (in a binary file, as its first int32: see readBinaryLayout)
     if (!scanner.skipBlankLines()) scanner.fail('the file ends before the dimension that nOFF announces');
     const at = scanner.pos;
     shape.dimension = scanner.integer();
-    if (shape.dimension < 1) scanner.fail(`the dimension must be at least 1, not ${shape.dimension}`, at);
-  }
-  if (shape.dimension > 3) {
-    throw new ParseError(
-      'off',
-      keywordLocation,
-      `${shape.keyword} vertices have ${shape.dimension} coordinates: only meshes in 3D (or 2D) can be read`,
-    );
+    checkDimension(shape.dimension, bytes.length, (reason) => scanner.fail(reason, at));
   }
 
   let file: Omit<MeshFile, 'comments' | 'notes'>;
@@ -177,6 +195,7 @@ class OffMesh {
     }
     const w = shape.homogeneous ? values[shape.dimension] : 1;
     if (w === 0) fail(`vertex ${v} has w = 0: a point at infinity has no place in a mesh`);
+    // fewer than 3 coordinates: the rest are 0; more: x, y, z are kept (`finish` says so)
     for (let k = 0; k < 3; k++) positions[3 * v + k] = k < shape.dimension ? values[k] / w : 0;
 
     let at = coordinates;
@@ -232,6 +251,12 @@ class OffMesh {
     }
     const faceCount = this.faceStarts.length - 1;
     if (vertexCount > 0 && faceCount === 0) notes.push('no faces: loaded as a point set');
+    const { dimension, keyword } = this.shape;
+    if (dimension > 3) {
+      notes.push(`${keyword} vertices have ${dimension} coordinates: kept x, y and z, dropped the other ${dimension - 3}`);
+    } else if (dimension < 3) {
+      notes.push(`${keyword} vertices have ${plural(dimension, 'coordinate')}: the missing ones are 0`);
+    }
     return {
       positions: this.positions,
       faceStarts: this.faceStarts,
@@ -304,10 +329,10 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
   if (!scanner.skipBlankLines()) scanner.fail('the file ends before the counts (vertices, faces, edges)');
   const countsAt = scanner.location();
   const vertexCount = scanner.integer();
-  if (scanner.atLineEnd()) scanner.fail('the counts line needs the number of vertices and of faces');
+  if (scanner.atLineEnd() && !scanner.skipBlankLines()) scanner.fail('the file ends before the number of faces');
   const faceCount = scanner.integer();
   if (!scanner.atLineEnd()) scanner.integer();
-  scanner.endLine('the counts line holds vertices, faces and edges');
+  scanner.endLine('the counts are vertices, faces and edges');
   if (vertexCount < 0 || faceCount < 0) {
     throw new ParseError('off', countsAt, `negative counts: ${vertexCount} vertices, ${faceCount} faces`);
   }
@@ -325,53 +350,87 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
   }
 
   const mesh = new OffMesh(shape, vertexCount, faceCount);
-  const values = new Float64Array(MAX_VALUES_PER_LINE);
-  const integral = new Uint8Array(MAX_VALUES_PER_LINE);
+  const maxValues = maxValuesPerLine(shape);
+  const values = new Float64Array(maxValues);
+  const integral = new Uint8Array(maxValues);
   const fail: Fail = (reason) => scanner.fail(reason);
   /** Reads the numbers left on this line into `values`; returns how many. */
   const readLine = (what: string): number => {
     let count = 0;
     while (!scanner.atLineEnd()) {
-      if (count === MAX_VALUES_PER_LINE) scanner.fail(`${what} has more than ${MAX_VALUES_PER_LINE} numbers`);
+      if (count === maxValues) scanner.fail(`${what} has more than ${maxValues} numbers`);
       values[count] = scanner.number();
       integral[count++] = scanner.integral ? 1 : 0;
     }
     return count;
   };
 
-  for (let v = 0; v < vertexCount; v++) {
-    if (!scanner.skipBlankLines()) {
-      scanner.fail(`the file ends after ${v} of ${plural(vertexCount, 'vertex', 'vertices')}`);
-    }
-    if ((v & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
-    mesh.setVertex(v, values, integral, readLine(`vertex ${v}`), fail);
-    scanner.endLine(`vertex ${v} should end here`);
-  }
-  progress(scanner.pos / bytes.length);
+  /** Reads one more number, from the next line when this one has ended; false at the end of the file. */
+  const readOnward = (count: number): boolean => {
+    if (scanner.atLineEnd() && !scanner.skipBlankLines()) return false;
+    values[count] = scanner.number();
+    integral[count] = scanner.integral ? 1 : 0;
+    return true;
+  };
+  // the fewest numbers a vertex has: a vertex that ends its line before them goes on over the next
+  const fewest = numbersPerVertex + (shape.normals ? 3 : 0) + (shape.colors ? 3 : 0) + (shape.texcoords ? 2 : 0);
 
-  const { faceStarts, faceIndices } = mesh;
-  for (let f = 0; f < faceCount; f++) {
-    if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${f} of ${plural(faceCount, 'face')}`);
-    if ((f & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
-    const at = scanner.pos;
-    const degree = scanner.integer();
-    if (degree < 1) scanner.fail(`face ${f} has ${degree} corners; a face needs at least one`, at);
-    if (degree > (bytes.length - scanner.pos + 1) / 2) {
-      scanner.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, at);
+  /**
+   * OFF is a stream of numbers: an element may go on over several lines. That is rare, and is also
+   * what a line with a number too few looks like, whose error then shows further on: the first
+   * element that did so is named in any error after it.
+   */
+  let firstSpan: string | undefined;
+  try {
+    for (let v = 0; v < vertexCount; v++) {
+      if (!scanner.skipBlankLines()) {
+        scanner.fail(`the file ends after ${v} of ${plural(vertexCount, 'vertex', 'vertices')}`);
+      }
+      if ((v & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
+      const line = scanner.line;
+      let count = readLine(`vertex ${v}`);
+      for (; count < fewest; count++) {
+        if (!readOnward(count)) scanner.fail(`the file ends inside vertex ${v}`);
+      }
+      if (scanner.line !== line) firstSpan ??= `vertex ${v} went on from line ${line} onto line ${scanner.line}`;
+      mesh.setVertex(v, values, integral, count, fail);
     }
-    const indices = faceIndices.reserve(degree);
-    let n = faceIndices.length;
-    for (let k = 0; k < degree; k++) {
-      if (scanner.atLineEnd()) scanner.fail(`face ${f} announces ${degree} corners but lists ${k} vertex ids`);
-      const indexAt = scanner.pos;
-      const index = scanner.integer();
-      if (index < 0 || index >= vertexCount) scanner.fail(indexOutOfRange(f, index, vertexCount), indexAt);
-      indices[n++] = index;
+    progress(scanner.pos / bytes.length);
+
+    const { faceStarts, faceIndices } = mesh;
+    for (let f = 0; f < faceCount; f++) {
+      if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${f} of ${plural(faceCount, 'face')}`);
+      if ((f & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
+      const at = scanner.pos;
+      const line = scanner.line;
+      const degree = scanner.integer();
+      if (degree < 1) {
+        scanner.fail(`face ${f} has ${degree} corners; a face needs at least one`, at);
+      }
+      if (degree > (bytes.length - scanner.pos + 1) / 2) {
+        scanner.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, at);
+      }
+      const indices = faceIndices.reserve(degree);
+      let n = faceIndices.length;
+      for (let k = 0; k < degree; k++) {
+        if (scanner.atLineEnd() && !scanner.skipBlankLines()) {
+          scanner.fail(`the file ends inside face ${f}, which announces ${degree} corners but lists ${k} vertex ids`);
+        }
+        const indexAt = scanner.pos;
+        const index = scanner.integer();
+        if (index < 0 || index >= vertexCount) scanner.fail(indexOutOfRange(f, index, vertexCount), indexAt);
+        indices[n++] = index;
+      }
+      faceIndices.length = n;
+      faceStarts[f + 1] = n;
+      if (scanner.line !== line) firstSpan ??= `face ${f} went on from line ${line} onto line ${scanner.line}`;
+      // the colour runs from the last index to the end of its line (Geomview's rule)
+      mesh.setFaceColor(f, values, integral, readLine(`face ${f}`), fail);
+      scanner.endLine(`face ${f} should end here`);
     }
-    faceIndices.length = n;
-    faceStarts[f + 1] = n;
-    mesh.setFaceColor(f, values, integral, readLine(`face ${f}`), fail);
-    scanner.endLine(`face ${f} should end here`);
+  } catch (error) {
+    if (!(error instanceof ParseError) || firstSpan === undefined) throw error;
+    throw new ParseError('off', error.location, `${error.reason} (note: ${firstSpan}; if it should not, it lists too few numbers)`);
   }
   if (scanner.skipBlankLines()) notes.push(`ignored the text after the last face (from line ${scanner.line})`);
   return {
@@ -442,8 +501,15 @@ interface BinaryResult {
   end: number;
 }
 
-function readBinaryLayout(bytes: Uint8Array, start: number, shape: OffShape, layout: BinaryLayout): BinaryResult {
+function readBinaryLayout(bytes: Uint8Array, start: number, keywordShape: OffShape, layout: BinaryLayout): BinaryResult {
   const reader = new BinaryReader(bytes, 'off', layout.littleEndian, start);
+  const shape = { ...keywordShape };
+  if (shape.dimensionFollows) {
+    // nOFF BINARY: the dimension is the first int32 after the header line, before the counts
+    reader.need(4, 'the dimension that nOFF announces');
+    shape.dimension = reader.int32();
+    checkDimension(shape.dimension, bytes.length, (reason) => reader.fail(reason, start));
+  }
   reader.need(12, 'the counts (vertices, faces, edges)');
   const vertexCount = reader.int32();
   const faceCount = reader.int32();
@@ -457,8 +523,8 @@ function readBinaryLayout(bytes: Uint8Array, start: number, shape: OffShape, lay
     reader.fail(`the counts (${counts}) do not fit in the ${plural(reader.remaining, 'byte')} that follow`, start);
   }
   const mesh = new OffMesh(shape, vertexCount, faceCount);
-  const values = new Float64Array(MAX_VALUES_PER_LINE);
-  const integral = new Uint8Array(MAX_VALUES_PER_LINE);
+  const values = new Float64Array(maxValuesPerLine(shape));
+  const integral = new Uint8Array(values.length);
   const fail: Fail = (reason) => reader.fail(reason);
   for (let v = 0; v < vertexCount; v++) {
     for (let k = 0; k < floatsPerVertex; k++) values[k] = reader.float32();
