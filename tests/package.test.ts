@@ -1,10 +1,11 @@
 /**
- * The package as its users get it: built, packed with `npm pack`, installed into a fresh project,
- * then imported from Node (with its type declarations), run as a CLI, and bundled by Vite with
- * the worker subpath.
+ * The package as its users get it: packed with `npm pack` from a checkout that was never built
+ * (as publishing does, and installing from a git URL), installed into a fresh project, then
+ * imported from Node (with its type declarations), run as a CLI, and bundled by Vite with the
+ * worker subpath.
  */
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -13,20 +14,38 @@ const root = join(import.meta.dirname, '..');
 const run = (command: string, args: string[], cwd: string) =>
   execFileSync(command, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, npm_config_loglevel: 'error' } });
 
+/**
+ * A checkout of the working tree: the files git tracks or would track (so no `dist/`), with the
+ * repository's installed packages beside them.
+ */
+function freshCheckout(): string {
+  const checkout = mkdtempSync(join(tmpdir(), 'halfedge-lab-checkout-'));
+  const files = run('git', ['ls-files', '--cached', '--others', '--exclude-standard', '-z'], root).split('\0').filter(Boolean);
+  for (const file of files) {
+    if (!existsSync(join(root, file))) continue; // deleted, not yet committed
+    mkdirSync(join(checkout, file, '..'), { recursive: true });
+    cpSync(join(root, file), join(checkout, file));
+  }
+  symlinkSync(join(root, 'node_modules'), join(checkout, 'node_modules'), 'dir');
+  return checkout;
+}
+
 describe('the packed package in a fresh project', () => {
   let project = '';
+  let checkout = '';
 
   beforeAll(() => {
     project = mkdtempSync(join(tmpdir(), 'halfedge-lab-user-'));
-    run('npm', ['run', 'build:lib'], root);
-    const tarball = run('npm', ['pack', '--pack-destination', project, '--json'], root);
+    checkout = freshCheckout();
+    expect(existsSync(join(checkout, 'dist'))).toBe(false);
+    const tarball = run('npm', ['pack', '--pack-destination', project, '--json'], checkout);
     const file = (JSON.parse(tarball) as Array<{ filename: string }>)[0]!.filename;
     writeFileSync(join(project, 'package.json'), JSON.stringify({ name: 'user', private: true, type: 'module' }));
     run('npm', ['install', '--prefer-offline', '--no-audit', '--no-fund', join(project, file)], project);
   }, 240_000);
 
   afterAll(() => {
-    if (project) rmSync(project, { recursive: true, force: true });
+    for (const dir of [project, checkout]) if (dir) rmSync(dir, { recursive: true, force: true });
   });
 
   it('imports in Node and builds a valid mesh', () => {
