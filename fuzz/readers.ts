@@ -253,35 +253,37 @@ export function checkInput(name: string, bytes: Uint8Array): { kind: 'refused'; 
   }
 }
 
+/** Case (seed, index) of a reader fuzzer: sample `index` (modulo), mutated 1 to 8 times (mostly once or twice). */
+export function mutatedSample(samples: Sample[], seed: number, index: number): { sample: string; steps: string[]; bytes: Uint8Array } {
+  const rand = seededRandom(caseSeed(seed, index));
+  const sample = samples[index % samples.length];
+  const steps: string[] = [];
+  const count = 1 + below(rand, 1 + below(rand, 8));
+  let bytes = sample.bytes;
+  if (sample.name.endsWith('.json') && rand() < 0.8) {
+    const doc = JSON.parse(new TextDecoder().decode(bytes));
+    for (let i = 0; i < count; i++) steps.push(mutateDocument(doc, rand));
+    bytes = encoder.encode(JSON.stringify(doc));
+  } else {
+    for (let i = 0; i < count; i++) {
+      const [out, step] = mutations[below(rand, mutations.length)](bytes, rand);
+      bytes = out;
+      steps.push(step);
+    }
+  }
+  return { sample: sample.name, steps, bytes };
+}
+
 /**
  * The fuzz target mutating `samples`, named `name`. Case (seed, index): 1 to 8 mutations of sample
  * `index` (modulo), put through `check` (the tests plant a broken one).
  */
 export function readerTarget(name: string, samples: Sample[], check = checkInput): FuzzTarget {
-  const mutated = (seed: number, index: number) => {
-    const rand = seededRandom(caseSeed(seed, index));
-    const sample = samples[index % samples.length];
-    const steps: string[] = [];
-    const count = 1 + below(rand, 1 + below(rand, 8)); // mostly one or two: more of them still read
-    let bytes = sample.bytes;
-    if (sample.name.endsWith('.json') && rand() < 0.8) {
-      const doc = JSON.parse(new TextDecoder().decode(bytes));
-      for (let i = 0; i < count; i++) steps.push(mutateDocument(doc, rand));
-      bytes = encoder.encode(JSON.stringify(doc));
-    } else {
-      for (let i = 0; i < count; i++) {
-        const [out, step] = mutations[below(rand, mutations.length)](bytes, rand);
-        bytes = out;
-        steps.push(step);
-      }
-    }
-    return { sample: sample.name, steps, bytes };
-  };
   return {
     name,
     runCase(seed: number, index: number): CaseOutcome {
       if (samples.length === 0) return { kind: 'refused', reason: 'no samples' };
-      const input = mutated(seed, index);
+      const input = mutatedSample(samples, seed, index);
       const outcome = check(input.sample, input.bytes);
       if (outcome.kind !== 'failure') return outcome;
       const bytes = input.bytes.length <= MAX_INPUT_BYTES ? ` bytes (base64) ${Buffer.from(input.bytes).toString('base64')}` : ` (${input.bytes.length} bytes)`;
