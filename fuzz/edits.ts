@@ -61,11 +61,20 @@ const shapes: Record<string, () => PolygonSoup> = {
 /** Operations run only on meshes up to this many faces, so a case stays within milliseconds. */
 const MAX_FACES_FOR_OPERATIONS = 400;
 
-/** What a step found wrong: ends the case as a failure. */
-class StepFailure extends Error {}
+/** What a step found wrong: ends the case as a failure, with the steps of its run that led there. */
+class StepFailure extends Error {
+  constructor(
+    message: string,
+    readonly steps: string[],
+  ) {
+    super(message);
+  }
+}
 
 interface Real {
   mesh: HalfedgeMesh;
+  /** The start mesh and the steps so far, as they ran (the ids and planes they chose). */
+  log: string[];
 }
 
 /** The `k`-th live element (by `pick` modulo the count), or -1 when there is none. */
@@ -97,26 +106,28 @@ export class Step implements fc.Command<object, Real> {
       return;
     }
     this.ran = plan.name;
+    real.log.push(plan.name);
+    const fail = (message: string) => new StepFailure(message, real.log);
     const before = mesh.clone();
     if (plan.refusal !== null) {
       const changed = diffPointers(before, mesh, 1).total;
-      if (changed > 0 || mesh.nFaces !== before.nFaces) throw new StepFailure(`${plan.name} was refused but changed the mesh`);
+      if (changed > 0 || mesh.nFaces !== before.nFaces) throw fail(`${plan.name} was refused but changed the mesh`);
       return;
     }
     let result: EditResult | void;
     try {
       result = plan.apply();
     } catch (error) {
-      throw new StepFailure(`${plan.name}: its predicate allowed it, then it threw ${(error as Error).stack ?? error}`);
+      throw fail(`${plan.name}: its predicate allowed it, then it threw ${(error as Error).stack ?? error}`);
     }
     const problems = validate(mesh, { limit: 3 });
-    if (problems.length > 0) throw new StepFailure(`${plan.name} left an invalid mesh: ${problems.map((p) => p.message).join('; ')}`);
+    if (problems.length > 0) throw fail(`${plan.name} left an invalid mesh: ${problems.map((p) => p.message).join('; ')}`);
     if (result) {
       const found = JSON.stringify(diffPointers(before, mesh, Infinity).changes);
-      if (JSON.stringify(result.changes) !== found) throw new StepFailure(`${plan.name} reported other pointer changes than it made`);
+      if (JSON.stringify(result.changes) !== found) throw fail(`${plan.name} reported other pointer changes than it made`);
     }
     const difference = reloadDifference(mesh);
-    if (difference) throw new StepFailure(`${plan.name}: saved and read back, ${difference}`);
+    if (difference) throw fail(`${plan.name}: saved and read back, ${difference}`);
   }
   toString(): string {
     return this.ran || this.label;
@@ -215,19 +226,17 @@ export function editSequenceTarget(commands = editCommands): FuzzTarget {
     commands: fc.commands(commands, { maxCommands: 12 }),
   });
   const run = ({ shape, commands: steps }: { shape: string; commands: Iterable<fc.Command<object, Real>> }) => {
-    fc.modelRun(() => ({ model: {}, real: { mesh: buildMesh(shapes[shape]()).mesh } }), steps);
+    fc.modelRun(() => ({ model: {}, real: { mesh: buildMesh(shapes[shape]()).mesh, log: [shape] } }), steps);
   };
   return {
     name: 'edits',
     runCase(seed: number, index: number): CaseOutcome {
       const details = fc.check(fc.property(sequence, run), { seed: caseSeed(seed, index), numRuns: 1 });
       if (!details.failed) return { kind: 'accepted' };
-      const example = details.counterexample?.[0];
-      // the commands come wrapped, marked when they ran: the failing one is the last that did
-      const ran = example ? [...example.commands].filter((c) => (c as { hasRan?: boolean }).hasRan) : [];
-      const input = example ? [example.shape, ...ran.map(String)].join('; ') : '(no counterexample)';
+      // the failing run's own log of steps (the shrunk one): the sequence that replays it
       const error = details.errorInstance;
       const reason = error instanceof StepFailure ? error.message : `${(error as Error | undefined)?.stack ?? String(error)}`;
+      const input = error instanceof StepFailure ? error.steps.join('; ') : String(details.counterexample?.[0]?.shape);
       return { kind: 'failure', reason, input: `${input}   [fast-check seed ${details.seed}, path ${details.counterexamplePath}]` };
     },
   };

@@ -1,11 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { cutMesh, planeCut, type Plane } from '../../src/core/cut/index.js';
 import { diffPointers } from '../../src/core/diff.js';
+import { collapseEdge, splitEdge } from '../../src/core/edits/index.js';
 import { InvalidInputError } from '../../src/core/errors.js';
 import { signedVolume } from '../../src/core/geometry.js';
 import { cube, disk, doubleTorus, grid, tetrahedron, torus, uvSphere } from '../../src/core/shapes.js';
 import { mergeSoups } from '../../src/core/soup.js';
 import { meshStats } from '../../src/core/stats.js';
+import { expectSurvivesReload } from '../core/reload.js';
 import { bowl, capDistance, halfVolumes, hollowBall, meshOf, size, steppedBlock, stepCut, uPrism } from './helpers.js';
 
 const PHASE_NAMES = [
@@ -267,5 +269,26 @@ describe('planes that miss the mesh', () => {
     expect(phases[0].explanation).toMatch(/3 below and 1 on it/);
     expect(phases[0].explanation).toMatch(/the plane does not cross the mesh/);
     expect([mesh.nVertices, mesh.nFaces, meshStats(mesh).closed]).toEqual([4, 4, true]);
+  });
+});
+
+// on a coarse mesh two corners the cut must join are often joined already, round the other way:
+// a second edge between them is what no file can hold
+describe('planeCut on coarse meshes, between vertices already joined', () => {
+  it('caps a torus of 4 × 3 quads without a second edge between two vertices', () => {
+    // the plane y = 0.825 meets the torus's top rings at vertices already joined round the ring
+    const mesh = meshOf(torus(4, 3));
+    stepCut(mesh, [0, 0.001, 0, -0.000825], { keep: 'below' });
+    expect(meshStats(mesh).boundaryLoops).toBe(0);
+    expectSurvivesReload(mesh);
+  });
+
+  it('splits a face between two corners on the plane that an edge already joins', () => {
+    // a tetrahedron with one edge split (a quad among its faces) and another collapsed
+    const mesh = meshOf(tetrahedron());
+    splitEdge(mesh, 2);
+    collapseEdge(mesh, 1);
+    stepCut(mesh, [0, 0.001, 0, 0], { keep: 'above', cap: false });
+    expectSurvivesReload(mesh);
   });
 });

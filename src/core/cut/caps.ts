@@ -21,9 +21,16 @@
  * crosses itself (it happens when faces lie within the tolerance of the plane, so the cut through
  * them is decided by rounding) cannot be ear-clipped: without holes, it is closed by a fan from
  * one corner, which may fold over but keeps the mesh closed and its volume right.
+ *
+ * A cap's diagonal may join two vertices that an edge of the mesh already joins (on a coarse mesh,
+ * two corners of the cut are often neighbours round the other way): it gets a vertex halfway,
+ * joined to the third corners of its two triangles, since no file can hold two edges between the
+ * same two vertices.
  */
+import { splitEdgeTriangulatedAt } from '../edits/split-edge.js';
 import { fillRings, planeBasis, triangulatePolygon } from '../edits/triangulate.js';
 import type { PointerWriter } from '../edits/writer.js';
+import type { HalfedgeMesh } from '../mesh.js';
 import type { UnitPlane } from './plane.js';
 
 export interface Caps {
@@ -80,7 +87,46 @@ export function capLoops(
   for (const [side, sideLoops] of loops) {
     if (sideLoops.length) capSide(w, sideLoops, side, plane, result);
   }
+  splitDoubledDiagonals(w, result.faces);
   return result;
+}
+
+/**
+ * Splits each cap diagonal that joins two vertices another edge already joins, at its middle,
+ * joining the new vertex to the third corners of the cap triangles beside it (edges no other
+ * edge doubles: the vertex is new). Adds the new faces to `faces`. Each split removes one doubled
+ * edge, so a face is looked at again at most once per side.
+ */
+function splitDoubledDiagonals(w: PointerWriter, faces: number[]): void {
+  const mesh = w.mesh;
+  const capFaces = new Set(faces);
+  for (let i = 0; i < faces.length; i++) {
+    for (let side = 0; side < 3; side++) {
+      const doubled = doubledDiagonal(mesh, faces[i], capFaces);
+      if (doubled === -1) break;
+      const before = mesh.faceSlots;
+      splitEdgeTriangulatedAt(w, doubled >> 1, 0.5);
+      for (let f = before; f < mesh.faceSlots; f++) {
+        faces.push(f);
+        capFaces.add(f);
+      }
+    }
+  }
+}
+
+/** A halfedge of face `f` between two cap faces whose two ends another edge joins too, or -1. */
+function doubledDiagonal(mesh: HalfedgeMesh, f: number, capFaces: Set<number>): number {
+  const { heNext, hePrev, heVertex, heFace } = mesh;
+  let h = mesh.fHalfedge[f];
+  for (let k = 0; k < 3; k++, h = heNext[h]) {
+    if (!capFaces.has(heFace[h ^ 1])) continue;
+    const target = heVertex[h ^ 1];
+    // rotate round the origin: another halfedge to the same target is a second edge
+    for (let g = hePrev[h] ^ 1, steps = 0; g !== h && steps < mesh.halfedgeSlots; g = hePrev[g] ^ 1, steps++) {
+      if (heVertex[g ^ 1] === target) return h;
+    }
+  }
+  return -1;
 }
 
 /** Caps one side's loops: outer loops with the holes inside them, each triangulated and filled. */

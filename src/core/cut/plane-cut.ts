@@ -191,12 +191,17 @@ class PlaneCut {
 
   splitCrossedFaces(): Phase {
     const w = new PointerWriter(this.mesh, { record: false });
-    const split = splitCrossedFaces(w, this.side, this.onPlane, this.plane);
+    const { split, midpoints } = splitCrossedFaces(w, this.side, this.onPlane, this.plane);
+    // the vertices halfway along new edges are on the plane: side 0
+    this.onPlane.push(...midpoints);
+    const side = this.side;
+    this.side = new Int8Array(this.mesh.vertexSlots);
+    this.side.set(side);
     const { created } = w.result();
     return {
       name: 'split crossed faces',
       explanation:
-        `${split.length} faces have corners on both sides; each is cut by new edges between its corners on the plane (a face crossed twice, like a U, gets two). ` +
+        `${split.length} faces have corners on both sides; each is cut by new edges between its corners on the plane (a face crossed twice, like a U, gets two; two corners already joined round the other way are joined through a new vertex halfway). ` +
         'Now every face lies on one side, touching the plane at most along its edges and corners.',
       created,
       rewired: { faces: Int32Array.from(split) },

@@ -24,18 +24,30 @@
  * are crossings too, and the line pairs them with the outer ones.) For a face that is far from
  * planar, that order can give edges that cross; the face is then split by crossings paired in
  * their order round the face, which always gives pieces on one side each.
+ *
+ * Two crossings already joined by an edge elsewhere (on a coarse mesh, two corners of a quad on
+ * the plane may be neighbours round the other way) are joined through a new vertex halfway, on
+ * the plane too: a second edge between the same two vertices is what no file can hold.
  */
 import { faceVectorArea } from '../geometry.js';
 import type { HalfedgeMesh } from '../mesh.js';
+import { halfedgeFromTo } from '../edits/find.js';
+import { splitEdgeAt } from '../edits/split-edge.js';
 import { splitFaceAt } from '../edits/split-face.js';
 import type { PointerWriter } from '../edits/writer.js';
 import type { UnitPlane } from './plane.js';
 
 /**
  * Splits every face around the vertices `onPlane` that has corners on both sides (`side[v]`
- * is +1, −1 or 0). Returns the faces that were split.
+ * is +1, −1 or 0). Returns the faces that were split, and the vertices made halfway along new
+ * edges (on the plane).
  */
-export function splitCrossedFaces(w: PointerWriter, side: Int8Array, onPlane: ArrayLike<number>, plane: UnitPlane): number[] {
+export function splitCrossedFaces(
+  w: PointerWriter,
+  side: Int8Array,
+  onPlane: ArrayLike<number>,
+  plane: UnitPlane,
+): { split: number[]; midpoints: number[] } {
   const mesh = w.mesh;
   const { hePrev, heFace } = mesh;
   // only faces with a corner on the plane can be crossed now
@@ -55,12 +67,13 @@ export function splitCrossedFaces(w: PointerWriter, side: Int8Array, onPlane: Ar
     } while (h !== start);
   }
   const split: number[] = [];
-  for (const f of candidates) if (splitAtCrossings(w, f, side, plane)) split.push(f);
-  return split;
+  const midpoints: number[] = [];
+  for (const f of candidates) if (splitAtCrossings(w, f, side, plane, midpoints)) split.push(f);
+  return { split, midpoints };
 }
 
 /** Splits face `f` at its crossings; false when it has none. */
-function splitAtCrossings(w: PointerWriter, f: number, side: Int8Array, plane: UnitPlane): boolean {
+function splitAtCrossings(w: PointerWriter, f: number, side: Int8Array, plane: UnitPlane, midpoints: number[]): boolean {
   const mesh = w.mesh;
   const { heNext, heVertex } = mesh;
   const loop: number[] = [];
@@ -89,7 +102,11 @@ function splitAtCrossings(w: PointerWriter, f: number, side: Int8Array, plane: U
   // a crossing: a corner (on the plane) where the outline goes on at the other side
   const crossings: number[] = []; // the halfedges leaving the crossing corners
   for (let i = 0; i < k; i++) if (along[(i + k - 1) % k] !== along[i]) crossings.push(loop[i]);
-  for (const [a, b] of pairCrossings(mesh, loop, crossings, normal, plane)) splitFaceAt(w, crossings[a], crossings[b]);
+  for (const [a, b] of pairCrossings(mesh, loop, crossings, normal, plane)) {
+    const joined = halfedgeFromTo(mesh, heVertex[crossings[a]], heVertex[crossings[b]]) !== -1;
+    const edge = splitFaceAt(w, crossings[a], crossings[b]);
+    if (joined) midpoints.push(splitEdgeAt(w, edge, 0.5));
+  }
   return true;
 }
 

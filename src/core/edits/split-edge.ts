@@ -90,6 +90,13 @@ export function splitEdgeTriangulated(mesh: HalfedgeMesh, e: number, options: Sp
   const why = canSplitEdgeTriangulated(mesh, e, t);
   if (why) throw new TopologyError(`splitEdgeTriangulated: ${why}`);
   const w = new PointerWriter(mesh, options);
+  const vertex = splitEdgeTriangulatedAt(w, e, t);
+  return { ...w.result(), vertex };
+}
+
+/** The triangulated split itself (the triangles beside `e` checked); returns the new vertex. Used by the plane cut's caps too. */
+export function splitEdgeTriangulatedAt(w: PointerWriter, e: number, t: number): number {
+  const mesh = w.mesh;
   const h = 2 * e;
   const vertex = splitEdgeAt(w, e, t);
   // (read the arrays afresh each time: a split may have grown them)
@@ -97,7 +104,7 @@ export function splitEdgeTriangulated(mesh: HalfedgeMesh, e: number, options: Sp
   if (mesh.heFace[h] !== -1) splitFaceAt(w, mesh.heNext[h], mesh.hePrev[h]);
   // f1 is now b → m → a → d: join m (start of t) to d (start of prev(prev(t)))
   if (mesh.heFace[h + 1] !== -1) splitFaceAt(w, h + 1, mesh.hePrev[mesh.hePrev[h + 1]]);
-  return { ...w.result(), vertex };
+  return vertex;
 }
 
 /** The split itself; returns the new vertex. Used by the other edits and the plane cut. */
