@@ -139,13 +139,13 @@ const fraction = fc.double({ min: 0.05, max: 0.95, noNaN: true });
 
 /** Every edit and operation, each with the choices it needs. */
 export const editCommands: Array<fc.Arbitrary<Step>> = [
-  pick.map((k) => new Step('flip', (m) => edgeStep(m, k, 'flip', canFlipEdge, flipEdge))),
-  fc.tuple(pick, fraction).map(([k, t]) => new Step('split', (m) => edgeStep(m, k, 'split', (mesh, e) => canSplitEdge(mesh, e, t), (mesh, e) => splitEdge(mesh, e, { t })))),
-  pick.map((k) => new Step('split-triangulated', (m) => edgeStep(m, k, 'split-triangulated', canSplitEdgeTriangulated, splitEdgeTriangulated))),
-  pick.map((k) => new Step('collapse', (m) => edgeStep(m, k, 'collapse', canCollapseEdge, collapseEdge))),
-  pick.map((k) => new Step('merge', (m) => edgeStep(m, k, 'merge', canMergeFaces, mergeFaces))),
-  pick.map((k) => new Step('poke', (m) => faceStep(m, k, 'poke', canPokeFace, pokeFace))),
-  pick.map((k) => new Step('triangulate', (m) => faceStep(m, k, 'triangulate', canTriangulateFace, triangulateFace))),
+  pick.map((k) => new Step('flip', (m) => elementStep(m, 'e', k, 'flip', canFlipEdge, flipEdge))),
+  fc.tuple(pick, fraction).map(([k, t]) => new Step('split', (m) => elementStep(m, 'e', k, 'split', (mesh, e) => canSplitEdge(mesh, e, t), (mesh, e) => splitEdge(mesh, e, { t })))),
+  pick.map((k) => new Step('split-triangulated', (m) => elementStep(m, 'e', k, 'split-triangulated', canSplitEdgeTriangulated, splitEdgeTriangulated))),
+  pick.map((k) => new Step('collapse', (m) => elementStep(m, 'e', k, 'collapse', canCollapseEdge, collapseEdge))),
+  pick.map((k) => new Step('merge', (m) => elementStep(m, 'e', k, 'merge', canMergeFaces, mergeFaces))),
+  pick.map((k) => new Step('poke', (m) => elementStep(m, 'f', k, 'poke', canPokeFace, pokeFace))),
+  pick.map((k) => new Step('triangulate', (m) => elementStep(m, 'f', k, 'triangulate', canTriangulateFace, triangulateFace))),
   fc.tuple(pick, pick, pick).map(([k, i, j]) => new Step('split-face', (m) => splitFaceStep(m, k, i, j))),
   fc.constant(null).map(() => new Step('triangulate-all', (m) => ({ name: 'triangulate-all', refusal: null, apply: () => void triangulateMesh(m, { record: false }) }))),
   fc.constantFrom<SubdivisionScheme>('loop', 'catmull-clark', 'butterfly', 'sqrt3').map(
@@ -160,26 +160,17 @@ export const editCommands: Array<fc.Arbitrary<Step>> = [
   fraction.map((share) => new Step('decimate', (m) => decimateStep(m, share))),
 ];
 
-function edgeStep(
+/** A step on the `k`-th live edge or face (`kind`), asking `can` first. */
+function elementStep(
   mesh: HalfedgeMesh,
+  kind: 'e' | 'f',
   k: number,
   name: string,
-  can: (mesh: HalfedgeMesh, e: number) => string | null,
-  edit: (mesh: HalfedgeMesh, e: number) => EditResult,
+  can: (mesh: HalfedgeMesh, id: number) => string | null,
+  edit: (mesh: HalfedgeMesh, id: number) => EditResult,
 ): Plan {
-  const e = nth(mesh.edges(), k);
-  return e === -1 ? null : { name: `${name} e${e}`, refusal: can(mesh, e), apply: () => edit(mesh, e) };
-}
-
-function faceStep(
-  mesh: HalfedgeMesh,
-  k: number,
-  name: string,
-  can: (mesh: HalfedgeMesh, f: number) => string | null,
-  edit: (mesh: HalfedgeMesh, f: number) => EditResult,
-): Plan {
-  const f = nth(mesh.faces(), k);
-  return f === -1 ? null : { name: `${name} f${f}`, refusal: can(mesh, f), apply: () => edit(mesh, f) };
+  const id = nth(kind === 'e' ? mesh.edges() : mesh.faces(), k);
+  return id === -1 ? null : { name: `${name} ${kind}${id}`, refusal: can(mesh, id), apply: () => edit(mesh, id) };
 }
 
 function splitFaceStep(mesh: HalfedgeMesh, k: number, i: number, j: number): Plan {

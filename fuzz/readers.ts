@@ -16,6 +16,7 @@ import path from 'node:path';
 import { buildMesh } from '../src/core/build.js';
 import { ParseError } from '../src/core/errors.js';
 import { meshFromHalfedgeJSON, meshToHalfedgeJSON } from '../src/core/io/halfedge-json.js';
+import { concatBytes } from '../src/core/io/output.js';
 import { readMesh } from '../src/core/io/read.js';
 import { meshToSoup, writeSoup } from '../src/core/io/write.js';
 import { writePly } from '../src/core/io/write-ply.js';
@@ -114,15 +115,15 @@ const mutations: Array<(bytes: Uint8Array, rand: Random) => [Uint8Array, string]
   },
   (bytes, rand) => {
     const [from, to] = range(bytes, rand);
-    return [concat(bytes.subarray(0, from), bytes.subarray(to)), `delete bytes ${from}..${to}`];
+    return [concatBytes([bytes.subarray(0, from), bytes.subarray(to)]), `delete bytes ${from}..${to}`];
   },
   (bytes, rand) => {
     const [from, to] = range(bytes, rand);
-    return [concat(bytes.subarray(0, to), bytes.subarray(from, to), bytes.subarray(to)), `repeat bytes ${from}..${to}`];
+    return [concatBytes([bytes.subarray(0, to), bytes.subarray(from, to), bytes.subarray(to)]), `repeat bytes ${from}..${to}`];
   },
   (bytes, rand) => {
     const [from, to] = range(bytes, rand);
-    return [concat(bytes.subarray(0, from), bytes.subarray(to), bytes.subarray(from, to)), `move bytes ${from}..${to} to the end`];
+    return [concatBytes([bytes.subarray(0, from), bytes.subarray(to), bytes.subarray(from, to)]), `move bytes ${from}..${to} to the end`];
   },
   (bytes, rand) => {
     // replace one whitespace-separated token by a telling number
@@ -130,7 +131,7 @@ const mutations: Array<(bytes: Uint8Array, rand: Random) => [Uint8Array, string]
     if (tokens.length === 0) return [bytes, 'no token to replace'];
     const [from, to] = tokens[below(rand, tokens.length)];
     const token = numberTokens[below(rand, numberTokens.length)];
-    return [concat(bytes.subarray(0, from), encoder.encode(token), bytes.subarray(to)), `token at byte ${from} → '${token}'`];
+    return [concatBytes([bytes.subarray(0, from), encoder.encode(token), bytes.subarray(to)]), `token at byte ${from} → '${token}'`];
   },
   (bytes, rand) => {
     // a header count (the first few numbers) made huge or wrong
@@ -138,7 +139,7 @@ const mutations: Array<(bytes: Uint8Array, rand: Random) => [Uint8Array, string]
     if (numbers.length === 0) return [bytes, 'no count to edit'];
     const [from, to] = numbers[below(rand, numbers.length)];
     const count = ['0', '1', '2147483648', '4294967295', String(below(rand, 50))][below(rand, 5)];
-    return [concat(bytes.subarray(0, from), encoder.encode(count), bytes.subarray(to)), `count at byte ${from} → ${count}`];
+    return [concatBytes([bytes.subarray(0, from), encoder.encode(count), bytes.subarray(to)]), `count at byte ${from} → ${count}`];
   },
   (bytes, rand) => {
     // a word (a type, element, property or keyword) renamed to a member of every object
@@ -146,7 +147,7 @@ const mutations: Array<(bytes: Uint8Array, rand: Random) => [Uint8Array, string]
     if (words.length === 0) return [bytes, 'no word to rename'];
     const [from, to] = words[below(rand, words.length)];
     const name = objectNames[below(rand, objectNames.length)];
-    return [concat(bytes.subarray(0, from), encoder.encode(name), bytes.subarray(to)), `word at byte ${from} → ${name}`];
+    return [concatBytes([bytes.subarray(0, from), encoder.encode(name), bytes.subarray(to)]), `word at byte ${from} → ${name}`];
   },
 ];
 
@@ -154,16 +155,6 @@ function range(bytes: Uint8Array, rand: Random): [number, number] {
   const a = below(rand, bytes.length + 1);
   const b = Math.min(bytes.length, a + 1 + below(rand, 64));
   return [a, b];
-}
-
-function concat(...parts: Uint8Array[]): Uint8Array {
-  const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
-  let at = 0;
-  for (const p of parts) {
-    out.set(p, at);
-    at += p.length;
-  }
-  return out;
 }
 
 function latin1(bytes: Uint8Array): string {
