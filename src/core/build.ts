@@ -693,7 +693,8 @@ function reportVertices(mesh: HalfedgeMesh, nInputVertices: number, report: Repo
     if (vHalfedge[v] === -1) {
       report.add('isolated-vertex', { message: `vertex ${v} is in no face`, inputVertices: [v], vertices: [v] });
     }
-    if (!Number.isFinite(positions[3 * v] + positions[3 * v + 1] + positions[3 * v + 2])) {
+    // each coordinate on its own: a sum of finite ones can overflow (1e308 + 1e308)
+    if (!(Number.isFinite(positions[3 * v]) && Number.isFinite(positions[3 * v + 1]) && Number.isFinite(positions[3 * v + 2]))) {
       report.add('non-finite-position', {
         message: `vertex ${v} is at (${positions[3 * v]}, ${positions[3 * v + 1]}, ${positions[3 * v + 2]})`,
         inputVertices: [v],

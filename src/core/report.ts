@@ -55,8 +55,8 @@ const summaries: Record<RepairKind, (n: number) => string> = {
     `${plural(n, 'edge')} had more than two faces; a halfedge has one twin, so the extra faces were detached`,
   'non-manifold-vertex': (n) =>
     `${plural(n, 'vertex', 'vertices')} joined several separate fans of faces; each extra fan got its own copy of the vertex`,
-  'isolated-vertex': (n) => `${plural(n, 'vertex', 'vertices')} belong to no face (kept as isolated vertices)`,
-  'non-finite-position': (n) => `${plural(n, 'vertex', 'vertices')} have a NaN or infinite coordinate`,
+  'isolated-vertex': (n) => `${plural(n, 'vertex belongs', 'vertices belong')} to no face (kept as isolated vertices)`,
+  'non-finite-position': (n) => `${plural(n, 'vertex has', 'vertices have')} a NaN or infinite coordinate`,
 };
 
 export function plural(n: number, one: string, many = `${one}s`): string {

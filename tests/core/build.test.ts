@@ -281,9 +281,12 @@ describe('buildMesh repairs and reports bad connectivity', () => {
     expect(validate(mesh)).toEqual([]);
   });
 
-  it('reports NaN and infinite coordinates', () => {
+  it('reports NaN and infinite coordinates, and only those (huge ones are finite)', () => {
     const { report } = buildMesh(soupFromArrays([0, 0, 0, 1, 0, NaN, 0, Infinity, 0], [[0, 1, 2]]));
-    expect(report.repairs.find((r) => r.kind === 'non-finite-position')?.count).toBe(2);
+    const repair = report.repairs.find((r) => r.kind === 'non-finite-position')!;
+    expect([repair.count, repair.message]).toEqual([2, '2 vertices have a NaN or infinite coordinate']);
+    const huge = buildMesh(soupFromArrays([0, 0, 0, 1e308, 1e308, 0, 0, 1, 0], [[0, 1, 2]])).report;
+    expect(huge.repairs).toEqual([]);
   });
 
   it('rejects arrays that do not describe a soup', () => {
