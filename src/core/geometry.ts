@@ -146,7 +146,8 @@ export function boundingBox(mesh: HalfedgeMesh): BoundingBox | null {
     const x = p[3 * v];
     const y = p[3 * v + 1];
     const z = p[3 * v + 2];
-    if (!Number.isFinite(x + y + z)) continue;
+    // each on its own: a sum of finite coordinates can overflow
+    if (!(Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(z))) continue;
     any = true;
     if (x < min[0]) min[0] = x;
     if (y < min[1]) min[1] = y;
