@@ -27,7 +27,7 @@
  * by three, in step with the inside. An operation cannot tell which level it runs: pass `level`
  * (`subdivide` does). A triangle with two or three boundary edges (only possible on a mesh that
  * did not come from an even level) cannot be fanned from one corner; on odd levels it gets a face
- * point joined to all its corners, old and new.
+ * point at its centroid, joined to all its corners, old and new.
  *
  * Phases: [odd levels with a boundary: split the boundary edges in three · join the boundary
  * points to the opposite corners] · insert face points · flip the old edges · relax the old
@@ -108,7 +108,7 @@ export function* sqrt3Level(mesh: HalfedgeMesh, listIds: boolean, level: number)
   }
 
   // insert face points and split faces
-  const facePoints = addFacePoints(mesh, faces, listIds);
+  const facePoints = addFacePoints(mesh, faces, listIds, V);
   const fan = fanFaces(mesh, faces, V + newBoundaryPoints, 1, listIds);
   yield {
     name: 'insert face points',

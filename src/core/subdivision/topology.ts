@@ -277,9 +277,10 @@ export function cutCorners(mesh: HalfedgeMesh, listIds: boolean): TopologyChange
 /**
  * Adds one vertex per listed face (or every face, in id order) at the mean of its corners (vertex
  * `V + i` for the i-th face), not yet joined to anything: an isolated vertex, which a valid mesh
- * may hold.
+ * may hold. Only corners numbered below `oldVertices` count: a face whose sides this level has
+ * already split keeps the centre of the face it was.
  */
-export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', listIds: boolean): TopologyChange {
+export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', listIds: boolean, oldVertices = Infinity): TopologyChange {
   const count = faces === 'all' ? mesh.faceSlots : faces.length;
   const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
   const { vertex: V } = appendSlots(mesh, count, 0, 0);
@@ -299,11 +300,13 @@ export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', lis
       let degree = 0;
       let h = start;
       do {
-        const v = 3 * heVertex[h];
-        x += data[v];
-        y += data[v + 1];
-        z += data[v + 2];
-        degree++;
+        if (heVertex[h] < oldVertices) {
+          const v = 3 * heVertex[h];
+          x += data[v];
+          y += data[v + 1];
+          z += data[v + 2];
+          degree++;
+        }
         h = heNext[h];
       } while (h !== start);
       const o = 3 * (V + i);
