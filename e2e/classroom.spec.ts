@@ -1,7 +1,15 @@
 import { expect, type Page, test } from '@playwright/test';
 import { preview } from 'vite';
 import { cube, writeSoup } from '../src/index.js';
-import { clickCanvas, onCanvas, openApp } from './helpers.js';
+import { colors } from '../src/ui/colors.js';
+import { canvasPixel, clickCanvas, colourDistance, hexToRgb, onCanvas, openApp } from './helpers.js';
+
+/** Whether halfedge `name` is drawn in the selection colour where it lies on screen. */
+async function drawnSelected(page: Page, name: string): Promise<boolean> {
+  await page.evaluate(() => new Promise(requestAnimationFrame));
+  const at = await page.evaluate((h) => window.halfedgeLab.screenPosition(h), name);
+  return colourDistance(await canvasPixel(page, at.x, at.y), hexToRgb(colors.selected)) < 70;
+}
 
 /** Finds an element of the given kind whose spot on screen picks it, to click it like a student. */
 async function clickable(page: Page, kind: 'halfedge' | 'vertex' | 'face', avoid: string | null): Promise<{ name: string; x: number; y: number }> {
@@ -60,6 +68,47 @@ test.describe('the classroom', () => {
     await expect(page.locator('.quiz-verdict')).toContainText(`→ ${second.answer}.`);
     expect(await page.evaluate(() => window.halfedgeLab.quiz.score())).toEqual({ right: 1, asked: 2 });
     await page.screenshot({ path: testInfo.outputPath('quiz-wrong.png') });
+  });
+
+  // the quiz's path used to stay drawn over everything: a new selection changed the inspector but
+  // not the view, until the page was reloaded
+  test('after an answer, a selection, a walk, Esc and another tab each take the view back', async ({ page }, testInfo) => {
+    await openApp(page, 'disk.off');
+    const answer = async () => {
+      await page.keyboard.press('q');
+      const question = await askClickable(page);
+      await clickCanvas(page, question.x, question.y);
+      await expect(page.locator('.quiz-verdict')).toContainText('Right');
+    };
+    await answer();
+    await page.evaluate(() => window.halfedgeLab.select('h0'));
+    await page.locator('#frame-selection').click();
+    await page.waitForTimeout(300);
+    expect(await drawnSelected(page, 'h0')).toBe(true);
+    await page.keyboard.press('n');
+    const next = (await page.evaluate(() => window.halfedgeLab.state().selection))!;
+    expect(next).not.toBe('h0');
+    expect(await drawnSelected(page, next)).toBe(true);
+    await page.screenshot({ path: testInfo.outputPath('quiz-then-walk.png') });
+
+    // Esc during a question stops it: the next click selects instead of answering
+    await answer();
+    await page.keyboard.press('q');
+    await page.keyboard.press('Escape');
+    expect(await page.evaluate(() => window.halfedgeLab.quiz.question()?.waiting)).toBe(false);
+    await page.evaluate(() => window.halfedgeLab.select('h0'));
+    expect(await drawnSelected(page, 'h0')).toBe(true);
+
+    // leaving the Quiz tab, and opening another model, take its drawing (and labels) off the view
+    const startLabels = page.locator('#viewport .label', { hasText: /^start / });
+    await answer();
+    await expect(startLabels).toHaveCount(1);
+    await page.getByRole('tab', { name: 'Inspect' }).click();
+    await expect(startLabels).toHaveCount(0);
+    await answer();
+    await expect(startLabels).toHaveCount(1);
+    expect(await page.evaluate(() => window.halfedgeLab.openSample('torus.off'))).toBe(true);
+    await expect(startLabels).toHaveCount(0);
   });
 
   test('presentation mode enlarges everything, and ? lists the keys', async ({ page }, testInfo) => {

@@ -279,7 +279,10 @@ export class App {
     this.tables.setMesh(mesh, this.convention);
     this.stepper.update(snapshot);
     this.history.update(snapshot);
-    if (this.quiz.active) this.quiz.ask(); // the question's ids may be gone
+    // a question on a changed mesh is asked again (its ids may be gone); a new model, or an
+    // answered question's path on a changed mesh, leaves the view
+    if (this.quiz.active && !frame) this.quiz.ask();
+    else if (this.quizSpec) this.quiz.end();
     this.drawSelection();
     this.drawPanels();
     this.markReady();
@@ -393,6 +396,7 @@ export class App {
   }
 
   showTab(name: 'inspect' | 'operate' | 'quiz' | 'file'): void {
+    if (name !== 'quiz' && this.quizSpec) this.quiz.end();
     for (const tab of ['inspect', 'operate', 'quiz', 'file']) {
       byId(`tab-${tab}`).setAttribute('aria-selected', String(tab === name));
       byId(`pane-${tab}`).hidden = tab !== name;
@@ -411,6 +415,8 @@ export class App {
     this.selection = selection;
     this.path = selection ? [{ move: null, to: selection }] : [];
     this.problemSpec = null;
+    // a selection (or Esc) ends the quiz's drawing, which would otherwise hide the selection's
+    if (this.quizSpec) this.quiz.end();
     this.afterSelect();
   }
 

@@ -52,6 +52,15 @@ export class QuizPanel {
     return this.question;
   }
 
+  /**
+   * Stops waiting for an answer and takes the path off the view (the question's text stays): a
+   * selection, Esc, another tab or another model takes the view back.
+   */
+  end(): void {
+    this.active = false;
+    this.actions.showPath(null, null);
+  }
+
   /** The student's answer; returns whether it was right. */
   answer(picked: Selection): boolean {
     const question = this.question;
