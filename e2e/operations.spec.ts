@@ -176,3 +176,33 @@ test.describe('stepping operations, history and export', () => {
     expect(png.subarray(1, 4).toString()).toBe('PNG');
   });
 });
+
+test.describe('stepping seen on a projector', () => {
+  for (const [width, height] of [
+    [1280, 720],
+    [1024, 768],
+  ]) {
+    test(`at ${width} × ${height}, the view names the phase and what its colours mean`, async ({ page }, testInfo) => {
+      await page.setViewportSize({ width, height });
+      await openApp(page, 'tetrahedron.off');
+      await page.getByRole('tab', { name: 'Operate' }).click();
+      await page.locator('[data-operation="loop"]').click();
+      await page.keyboard.press('s');
+      const legend = page.locator('#legend');
+      await expect(legend).toContainText('Loop subdivision — phase 1 of 4: split every edge');
+      for (const meaning of ['created', 'moved', 'rewired']) await expect(legend).toContainText(meaning);
+      await expect(legend).not.toContainText('prev');
+      await expect(page.locator('#status')).toContainText('phase 1 of 4');
+      // the phase's name is on screen, inside the view, not below the fold
+      const box = (await legend.locator('.legend-phase').boundingBox())!;
+      const view = (await page.locator('#viewport').boundingBox())!;
+      expect(box.y + box.height).toBeLessThanOrEqual(Math.min(height, view.y + view.height));
+      expect(box.x + box.width).toBeLessThanOrEqual(view.x + view.width);
+      await page.screenshot({ path: testInfo.outputPath(`stepping-${width}x${height}.png`) });
+      // run to the end: the legend explains the pointer colours again
+      await page.keyboard.press('g');
+      await expect(legend).toContainText('prev');
+      await expect(legend).not.toContainText('rewired');
+    });
+  }
+});

@@ -27,7 +27,7 @@ import { renderInspector } from './panels/inspector.js';
 import { renderLegend, renderValuesLegend } from './panels/legend.js';
 import { OperationsPanel } from './panels/operations.js';
 import { QuizPanel } from './panels/quiz.js';
-import { StepperPanel } from './panels/stepper.js';
+import { StepperPanel, steppingTitle } from './panels/stepper.js';
 import { RecordTables } from './panels/tables.js';
 import { TraversalPanel } from './panels/traversal.js';
 import { renderBreadcrumb, renderWalkButtons } from './panels/walk.js';
@@ -278,6 +278,10 @@ export class App {
     void this.refreshArrows();
     this.tables.setMesh(mesh, this.convention);
     this.stepper.update(snapshot);
+    // while stepping, the view itself says which phase this is and what its colours mean
+    const stepping = steppingTitle(snapshot);
+    renderLegend(byId('legend'), stepping ? { title: stepping, explanation: snapshot.phase?.explanation ?? '' } : null);
+    if (stepping) this.say(`${stepping}.`);
     this.history.update(snapshot);
     // a question on a changed mesh is asked again (its ids may be gone); a new model, or an
     // answered question's path on a changed mesh, leaves the view

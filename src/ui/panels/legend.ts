@@ -1,14 +1,36 @@
-/** The colour legend, on screen whenever the mesh is. */
-import { colors, legend } from '../colors.js';
+/**
+ * The colour legend, on screen whenever the mesh is. While an operation is stepped the colours
+ * mean something else, so the legend then says which phase this is, in one sentence, and what
+ * the colours mean now: the phase's name would otherwise sit below the fold of the Operate tab.
+ */
+import { colors, legend, phaseColors } from '../colors.js';
 import { el, replace } from '../dom.js';
 import type { ColourScale } from '../scene/colour-map.js';
 
-export function renderLegend(container: HTMLElement): void {
+/** The phase being stepped: its title ("Loop subdivision — phase 2 of 4: …") and explanation. */
+export interface LegendPhase {
+  title: string;
+  explanation: string;
+}
+
+export function renderLegend(container: HTMLElement, phase: LegendPhase | null = null): void {
+  const row = (color: string, label: string) =>
+    el('div', { class: 'legend-row' }, el('span', { class: 'swatch', style: `background:${color}`, 'aria-hidden': 'true' }), label);
+  container.classList.toggle('stepping', phase !== null);
+  if (phase) {
+    // the explanation's first sentence: the one that says what the phase does
+    const sentence = phase.explanation.split(/(?<=\.) (?=[A-Z])/)[0] ?? '';
+    replace(
+      container,
+      el('p', { class: 'legend-phase' }, phase.title),
+      sentence ? el('p', { class: 'legend-sentence' }, sentence) : '',
+      ...(['created', 'moved', 'rewired'] as const).map((name) => row(phaseColors[name], name)),
+    );
+    return;
+  }
   replace(
     container,
-    ...legend.map(({ role, label }) =>
-      el('div', { class: 'legend-row' }, el('span', { class: 'swatch', style: `background:${colors[role]}`, 'aria-hidden': 'true' }), label),
-    ),
+    ...legend.map(({ role, label }) => row(colors[role], label)),
     el('div', { class: 'legend-row' }, el('span', { class: 'swatch dashed', 'aria-hidden': 'true' }), 'boundary halfedge'),
   );
 }

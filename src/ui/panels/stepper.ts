@@ -17,6 +17,19 @@ export interface StepperActions {
   select(s: Selection): void;
 }
 
+/**
+ * "Loop subdivision — phase 2 of 4: split every edge" while an operation is being stepped (or
+ * "…: ready — press Step" before its first phase); null when none is. The stepper and the view's
+ * legend both say it.
+ */
+export function steppingTitle(snapshot: Snapshot): string | null {
+  const { stepping, phase } = snapshot;
+  if (!stepping) return null;
+  if (stepping.phases === 0) return `${stepping.label}: ready — press Step`;
+  const of = stepping.total ? ` of ${stepping.total}` : '';
+  return `${stepping.label} — phase ${stepping.phases}${of}: ${phase?.name ?? ''}`;
+}
+
 /** Rows of the pointer diff shown (the count says how many there were). */
 const MAX_DIFF_ROWS = 300;
 
@@ -52,9 +65,7 @@ export class StepperPanel {
     setAvailability(this.runButton, 'Run to end (G)', idle ? noOperation : null);
     setAvailability(this.cancelButton, 'Cancel the operation (X)', idle ? noOperation : null);
     if (stepping) {
-      const of = stepping.total ? ` of ${stepping.total}` : '';
-      this.title.textContent =
-        stepping.phases === 0 ? `${stepping.label}: ready — press Step` : `${stepping.label} — phase ${stepping.phases}${of}: ${phase?.name ?? ''}`;
+      this.title.textContent = steppingTitle(snapshot)!;
     } else {
       const last = snapshot.history.items[snapshot.history.index];
       this.title.textContent = phase ? `${last?.label ?? 'done'} — done (last phase: ${phase.name})` : 'No operation running.';
