@@ -166,3 +166,32 @@ test.describe('the teaching app', () => {
     for (let i = 0; i < count; i++) await expect(controls.nth(i)).toHaveAccessibleName(/\S/);
   });
 });
+
+test.describe('target naming', () => {
+  // the record said target while the legend, the V key and the quiz still spoke of the origin
+  test('the legend, the walk buttons, the V key, the traversal and the quiz all speak target', async ({ page }, testInfo) => {
+    await openApp(page, 'disk.off');
+    await page.locator('#convention').selectOption('target');
+    await expect(page.locator('#legend')).toContainText('target vertex');
+    await expect(page.locator('#legend')).not.toContainText('origin');
+    await expect(page.getByRole('button', { name: 'Walk to target (V)' })).toBeVisible();
+
+    await page.evaluate(() => window.halfedgeLab.select('h0'));
+    const record = await page.evaluate(() => window.halfedgeLab.record('h0'));
+    expect(record.target).toMatch(/^v\d+$/);
+    await page.keyboard.press('v');
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe(record.target);
+    await page.screenshot({ path: testInfo.outputPath('target-naming.png') });
+
+    // a question whose path ends at a vertex asks for the target
+    await page.keyboard.press('q');
+    let text = '';
+    for (let tries = 0; tries < 60 && !/vertex/.test(text); tries++) text = await page.evaluate(() => window.halfedgeLab.quiz.ask()!);
+    expect(text).toMatch(/^Which vertex is h\d+(\.\w+)*\.target\?$/);
+
+    // back to origin naming: the V button and the legend follow
+    await page.locator('#convention').selectOption('origin');
+    await expect(page.locator('#legend')).toContainText('origin vertex');
+    await expect(page.getByRole('button', { name: 'Walk to origin (V)', includeHidden: true })).toBeAttached();
+  });
+});

@@ -122,7 +122,7 @@ export class App {
     this.tables = new RecordTables(byId('tables'), (s) => this.select(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
       byId('traversal'),
-      () => ({ mesh: this.mesh, selection: this.selection }),
+      () => ({ mesh: this.mesh, selection: this.selection, convention: this.convention }),
       (spec) => {
         this.traversalSpec = spec;
         this.drawSelection();
@@ -149,14 +149,15 @@ export class App {
     });
     this.quiz = new QuizPanel(byId('quiz'), {
       mesh: () => this.mesh,
+      convention: () => this.convention,
       showPath: (question, picked) => {
         this.quizSpec = question && this.mesh ? quizHighlight(this.mesh, question.path, picked, picked !== null && isRight(question, picked)) : null;
         this.drawSelection();
       },
     });
-    renderLegend(byId('legend'));
+    this.drawLegend();
     renderHelp(byId('help-keys'));
-    renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move));
+    renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move), this.convention);
     this.wireControls();
     this.drawPanels();
   }
@@ -278,9 +279,8 @@ export class App {
     void this.refreshArrows();
     this.tables.setMesh(mesh, this.convention);
     this.stepper.update(snapshot);
-    // while stepping, the view itself says which phase this is and what its colours mean
+    this.drawLegend();
     const stepping = steppingTitle(snapshot);
-    renderLegend(byId('legend'), stepping ? { title: stepping, explanation: snapshot.phase?.explanation ?? '' } : null);
     if (stepping) this.say(`${stepping}.`);
     this.history.update(snapshot);
     // a question on a changed mesh is asked again (its ids may be gone); a new model, or an
@@ -468,6 +468,10 @@ export class App {
   setConvention(convention: Convention): void {
     this.convention = convention;
     byId<HTMLSelectElement>('convention').value = convention;
+    // everything that names the vertex of a halfedge speaks the naming chosen
+    this.drawLegend();
+    renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move), convention);
+    if (this.quiz.active) this.quiz.ask();
     if (this.mesh) this.tables.setMesh(this.mesh, convention);
     this.drawSelection();
     this.drawPanels();
@@ -504,6 +508,13 @@ export class App {
     this.drawSelection();
     this.drawPanels();
     this.tables.reveal(this.selection);
+  }
+
+  /** The legend: while stepping, the phase and what its colours mean; else the pointers' colours. */
+  private drawLegend(): void {
+    const stepping = this.snapshot ? steppingTitle(this.snapshot) : null;
+    const phase = stepping ? { title: stepping, explanation: this.snapshot?.phase?.explanation ?? '' } : null;
+    renderLegend(byId('legend'), phase, this.convention);
   }
 
   private drawSelection(): void {

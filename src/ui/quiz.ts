@@ -4,6 +4,7 @@
  * student gets them right. Pure: a question is made from the mesh and a random source.
  */
 import type { HalfedgeMesh } from '../core/index.js';
+import type { Convention } from './records.js';
 import { elementName, type Move, type Selection, walk } from './selection.js';
 
 export interface Question {
@@ -16,7 +17,8 @@ export interface Question {
 }
 
 const halfedgeMoves: Move[] = ['next', 'prev', 'twin'];
-const finalMoves: Move[] = ['next', 'prev', 'twin', 'origin', 'face'];
+/** The last move of a path may also lead to a vertex: the one the naming names (origin or target). */
+const finalMoves = (convention: Convention): Move[] => ['next', 'prev', 'twin', convention, 'face'];
 
 /** Hops for a student who has answered `streak` questions right in a row. */
 export function hopsFor(streak: number): number {
@@ -24,7 +26,7 @@ export function hopsFor(streak: number): number {
 }
 
 /** A question of `hops` moves from a random halfedge, or null on a mesh without halfedges. */
-export function makeQuestion(mesh: HalfedgeMesh, random: () => number, hops: number): Question | null {
+export function makeQuestion(mesh: HalfedgeMesh, random: () => number, hops: number, convention: Convention = 'origin'): Question | null {
   if (mesh.nHalfedges === 0) return null;
   let h = Math.floor(random() * mesh.halfedgeSlots);
   for (let tries = 0; mesh.eDeleted[h >> 1] && tries < mesh.halfedgeSlots; tries++) h = (h + 1) % mesh.halfedgeSlots;
@@ -32,7 +34,7 @@ export function makeQuestion(mesh: HalfedgeMesh, random: () => number, hops: num
   const path: Selection[] = [start];
   const moves: Move[] = [];
   for (let i = 0; i < hops; i++) {
-    const choices = i + 1 < hops ? halfedgeMoves : finalMoves;
+    const choices = i + 1 < hops ? halfedgeMoves : finalMoves(convention);
     // a boundary halfedge has no face: draw again until the move leads somewhere
     for (let tries = 0; tries < 20; tries++) {
       const move = choices[Math.floor(random() * choices.length)];

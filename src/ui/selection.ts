@@ -34,7 +34,6 @@ export const moveKeys: Record<string, Move> = {
   p: 'prev',
   t: 'twin',
   f: 'face',
-  v: 'origin',
   e: 'edge',
   h: 'halfedge',
   r: 'twin.next',

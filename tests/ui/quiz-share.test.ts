@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { buildMesh, disk, fan, seededRandom, torus } from '../../src/index.js';
 import { hopsFor, isRight, makeQuestion } from '../../src/ui/quiz.js';
+import { traversals } from '../../src/ui/panels/traversal.js';
 import { walk } from '../../src/ui/selection.js';
 import { decodeViewState, encodeViewState } from '../../src/ui/share.js';
 
@@ -27,6 +28,27 @@ describe('quiz questions', () => {
       const question = makeQuestion(mesh, random, 3)!;
       expect(question.path).toHaveLength(4);
       if (question.answer.kind === 'face') expect(question.answer.id).toBeGreaterThanOrEqual(0);
+    }
+  });
+
+  it('under target naming, asks for targets, never origins, and the answer is the target', () => {
+    const { mesh } = buildMesh(torus(6, 5));
+    const random = seededRandom(5);
+    const vertexQuestions = Array.from({ length: 200 }, () => makeQuestion(mesh, random, 1, 'target')!).filter((q) => q.answer.kind === 'vertex');
+    expect(vertexQuestions.length).toBeGreaterThan(10);
+    for (const question of vertexQuestions) {
+      expect(question.moves).toEqual(['target']);
+      expect(question.answer.id).toBe(mesh.heVertex[mesh.heNext[question.start.id]]);
+    }
+  });
+
+  it('starts the fan traversal at the vertex a selected halfedge names: its origin or its target', () => {
+    const { mesh } = buildMesh(torus(6, 5));
+    const fanOf = traversals.find((t) => t.title === 'Faces around this vertex')!;
+    for (const convention of ['origin', 'target'] as const) {
+      const steps = fanOf.steps(mesh, { kind: 'halfedge', id: 7 }, convention);
+      const v = convention === 'origin' ? mesh.heVertex[7] : mesh.heVertex[mesh.heNext[7]];
+      expect(Array.isArray(steps) && mesh.heVertex[steps[0]!.h]).toBe(v);
     }
   });
 

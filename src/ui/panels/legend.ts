@@ -5,6 +5,7 @@
  */
 import { colors, legend, phaseColors } from '../colors.js';
 import { el, replace } from '../dom.js';
+import type { Convention } from '../records.js';
 import type { ColourScale } from '../scene/colour-map.js';
 
 /** The phase being stepped: its title ("Loop subdivision — phase 2 of 4: …") and explanation. */
@@ -13,7 +14,7 @@ export interface LegendPhase {
   explanation: string;
 }
 
-export function renderLegend(container: HTMLElement, phase: LegendPhase | null = null): void {
+export function renderLegend(container: HTMLElement, phase: LegendPhase | null, convention: Convention): void {
   const row = (color: string, label: string) =>
     el('div', { class: 'legend-row' }, el('span', { class: 'swatch', style: `background:${color}`, 'aria-hidden': 'true' }), label);
   container.classList.toggle('stepping', phase !== null);
@@ -30,7 +31,8 @@ export function renderLegend(container: HTMLElement, phase: LegendPhase | null =
   }
   replace(
     container,
-    ...legend.map(({ role, label }) => row(colors[role], label)),
+    // the highlighted vertex is the one the naming names
+    ...legend.map(({ role, label }) => row(colors[role], role === 'origin' ? `${convention} vertex` : label)),
     el('div', { class: 'legend-row' }, el('span', { class: 'swatch dashed', 'aria-hidden': 'true' }), 'boundary halfedge'),
   );
 }

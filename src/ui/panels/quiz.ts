@@ -4,12 +4,15 @@
  * after right answers.
  */
 import type { HalfedgeMesh } from '../../core/index.js';
+import type { Convention } from '../records.js';
 import { el, replace } from '../dom.js';
 import { hopsFor, isRight, makeQuestion, type Question } from '../quiz.js';
 import { elementName, type Selection } from '../selection.js';
 
 export interface QuizActions {
   mesh(): HalfedgeMesh | null;
+  /** The naming in use: a path may end at a halfedge's origin or target, as the naming says. */
+  convention(): Convention;
   /** Shows the path walked (start … answer) in the view, or clears it. */
   showPath(question: Question | null, picked: Selection | null): void;
 }
@@ -43,7 +46,7 @@ export class QuizPanel {
   /** Asks a new question (about the current mesh). */
   ask(): Question | null {
     const mesh = this.actions.mesh();
-    this.question = mesh ? makeQuestion(mesh, this.random, hopsFor(this.streak)) : null;
+    this.question = mesh ? makeQuestion(mesh, this.random, hopsFor(this.streak), this.actions.convention()) : null;
     this.active = this.question !== null;
     this.prompt.textContent = this.question ? `${this.question.text} Click it in the view.` : 'Open a mesh with faces first.';
     this.verdict.textContent = '';

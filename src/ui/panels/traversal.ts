@@ -6,6 +6,7 @@
 import type { HalfedgeMesh } from '../../core/index.js';
 import { colors } from '../colors.js';
 import { el, replace } from '../dom.js';
+import type { Convention } from '../records.js';
 import { emptyHighlight, type HighlightSpec } from '../scene/highlight.js';
 import type { Selection } from '../selection.js';
 
@@ -22,7 +23,8 @@ export interface Traversal {
   title: string;
   code: string[];
   /** Builds the steps from the selection, or says why it cannot start. */
-  steps(mesh: HalfedgeMesh, selection: Selection): TraversalStep[] | string;
+  /** The steps from the selection; a selected halfedge stands for the vertex the naming names. */
+  steps(mesh: HalfedgeMesh, selection: Selection, convention: Convention): TraversalStep[] | string;
   /** Kind of element `visit` collects. */
   visits: 'halfedge' | 'face';
 }
@@ -57,9 +59,10 @@ const vertexFan: Traversal = {
     '  h = mesh.twin(mesh.prev(h)); // counter-clockwise',
     '} while (h !== start);',
   ],
-  steps(mesh, selection) {
-    const v = selection.kind === 'vertex' ? selection.id : selection.kind === 'halfedge' ? mesh.heVertex[selection.id] : -1;
-    if (v < 0) return 'select a vertex (or a halfedge leaving one) first';
+  steps(mesh, selection, convention) {
+    const named = (h: number) => (convention === 'origin' ? mesh.heVertex[h] : mesh.heVertex[mesh.heNext[h]]);
+    const v = selection.kind === 'vertex' ? selection.id : selection.kind === 'halfedge' ? named(selection.id) : -1;
+    if (v < 0) return `select a vertex (or a halfedge ${convention === 'origin' ? 'leaving' : 'arriving at'} one) first`;
     const start = mesh.vHalfedge[v];
     if (start < 0) return `v${v} is isolated: no faces around it`;
     return loopSteps(start, (h) => mesh.hePrev[h] ^ 1, (h) => mesh.heFace[h], mesh.halfedgeSlots);
@@ -109,7 +112,7 @@ export class TraversalPanel {
 
   constructor(
     container: HTMLElement,
-    private readonly context: () => { mesh: HalfedgeMesh | null; selection: Selection | null },
+    private readonly context: () => { mesh: HalfedgeMesh | null; selection: Selection | null; convention: Convention },
     private readonly show: (spec: HighlightSpec | null) => void,
   ) {
     const choose = el(
@@ -149,12 +152,12 @@ export class TraversalPanel {
   /** Starts `traversal` at the current selection. */
   begin(traversal: Traversal): void {
     this.pause();
-    const { mesh, selection } = this.context();
+    const { mesh, selection, convention } = this.context();
     if (!mesh || !selection) {
       this.message.textContent = 'Select an element first.';
       return;
     }
-    const steps = traversal.steps(mesh, selection);
+    const steps = traversal.steps(mesh, selection, convention);
     if (typeof steps === 'string') {
       this.message.textContent = steps;
       return;
