@@ -195,3 +195,43 @@ test.describe('target naming', () => {
     await expect(page.getByRole('button', { name: 'Walk to origin (V)', includeHidden: true })).toBeAttached();
   });
 });
+
+test.describe('frame selection', () => {
+  /** How much of the view the selection's neighbours span after framing, as a share of its smaller side. */
+  async function spanAfterFraming(page: import('@playwright/test').Page, element: string, neighbours: string[]): Promise<number> {
+    await page.evaluate((name) => window.halfedgeLab.select(name), element);
+    await page.keyboard.press('z');
+    await page.waitForTimeout(200);
+    const points = await page.evaluate((names) => names.map((n) => window.halfedgeLab.screenPosition(n)), neighbours);
+    const view = (await page.locator('#viewport').boundingBox())!;
+    const xs = points.map((p) => p.x);
+    const ys = points.map((p) => p.y);
+    expect(points.every((p) => p.visible)).toBe(true);
+    return Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys)) / Math.min(view.width, view.height);
+  }
+
+  // on the sphere it hardly zoomed; on a pinched vertex it zoomed out
+  test('brings a vertex and its neighbours to fill a good part of the view, on a sphere and at a pinched vertex', async ({ page }) => {
+    await openApp(page, 'sphere.ply');
+    // v40's one-ring, walked with prev.twin
+    const neighbours = await page.evaluate(() => {
+      const names: string[] = [];
+      let h = window.halfedgeLab.record('v40').halfedge!;
+      for (let i = 0; i < 12; i++) {
+        const r = window.halfedgeLab.record(h);
+        names.push(window.halfedgeLab.record(r.twin!).origin!);
+        h = window.halfedgeLab.record(r.prev!).twin!;
+        if (h === window.halfedgeLab.record('v40').halfedge) break;
+      }
+      return names;
+    });
+    expect(await spanAfterFraming(page, 'v40', neighbours)).toBeGreaterThan(0.35);
+
+    const tetrahedra =
+      'OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n0 -1 0\n0 0 -1\n' +
+      '3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 5 4\n3 0 4 6\n3 0 6 5\n3 4 5 6\n';
+    await page.evaluate((text) => window.halfedgeLab.open(new TextEncoder().encode(text), 'two-tetrahedra.off'), tetrahedra);
+    // v7, the copy of the pinched vertex, joins v4, v5 and v6
+    expect(await spanAfterFraming(page, 'v7', ['v4', 'v5', 'v6'])).toBeGreaterThan(0.35);
+  });
+});

@@ -47,6 +47,28 @@ test.describe('stepping operations, history and export', () => {
     await page.screenshot({ path: testInfo.outputPath('repairs.png') });
   });
 
+  // two tetrahedra sharing a vertex opened with "Opened …" and a green check, V = 8 where the file
+  // has 7, and the split vertex hidden behind a face: the repair was easy to miss
+  test('says on opening that a file was repaired, frames the culprit, and leads to the list', async ({ page }, testInfo) => {
+    await openApp(page, 'disk.off');
+    const tetrahedra =
+      'OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n0 -1 0\n0 0 -1\n' +
+      '3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 5 4\n3 0 4 6\n3 0 6 5\n3 4 5 6\n';
+    expect(await page.evaluate((text) => window.halfedgeLab.open(new TextEncoder().encode(text), 'two-tetrahedra.off'), tetrahedra)).toBe(true);
+    const status = page.locator('#status');
+    await expect(status).toContainText('Opened two-tetrahedra.off, repaired: 1 vertex joined several separate fans of faces');
+    // the copy of the shared vertex is selected and in sight
+    const selection = (await page.evaluate(() => window.halfedgeLab.state().selection))!;
+    expect(selection).toBe('v7');
+    // (the camera glides there)
+    await expect.poll(() => page.evaluate((v) => window.halfedgeLab.screenPosition(v).visible, selection)).toBe(true);
+    await page.waitForTimeout(700);
+    await page.screenshot({ path: testInfo.outputPath('repaired-on-open.png') });
+    await status.getByRole('button', { name: 'Show the repairs' }).click();
+    await expect(page.locator('#pane-file')).toBeVisible();
+    await expect(page.locator('#file-info [data-repair="non-manifold-vertex"]')).toHaveAttribute('open', '');
+  });
+
   test('steps Loop subdivision phase by phase with the invariants holding after each', async ({ page }, testInfo) => {
     await openApp(page, 'tetrahedron.off');
     await page.getByRole('tab', { name: 'Operate' }).click();

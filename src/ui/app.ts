@@ -8,8 +8,10 @@ import {
   deserializeMesh,
   faceCentroid,
   faceVectorArea,
+  faceVertices,
   type HalfedgeMesh,
   meshToHalfedgeJSON,
+  type Repair,
   type RepairIncident,
   vertexAdjacentFaces,
 } from '../core/index.js';
@@ -19,7 +21,7 @@ import type { EditRequest, OperationRequest, Snapshot } from '../workers/protoco
 import { byId, el, replace } from './dom.js';
 import { combineHighlights, hoverHighlight, phaseHighlight, problemHighlight, quizHighlight, selectionHighlight } from './highlights.js';
 import { renderExport } from './panels/export.js';
-import { renderFileInfo } from './panels/file-info.js';
+import { incidentTarget, renderFileInfo } from './panels/file-info.js';
 import { renderHelp } from './panels/help.js';
 import { HistoryPanel } from './panels/history.js';
 import { renderHud } from './panels/hud.js';
@@ -173,7 +175,9 @@ export class App {
       this.sample = sample;
       byId<HTMLSelectElement>('sample-select').value = sample ?? ''; // blank for a file of the user's
       this.show(snapshot, true);
-      this.say(`Opened ${name}.`);
+      const repairs = snapshot.report?.repairs ?? [];
+      if (repairs.length > 0) this.announceRepairs(name, repairs);
+      else this.say(`Opened ${name}.`);
       return true;
     } catch (error) {
       this.hideProgress();
@@ -304,22 +308,28 @@ export class App {
     this.viewer.frame(box, this.viewNormal(), radius);
   }
 
+  /**
+   * Brings the selection and its neighbourhood (the faces around it) to fill most of the view,
+   * seen from the side its faces face.
+   */
   frameSelection(): void {
     const mesh = this.mesh;
     const s = this.selection;
     if (!mesh || !s) return;
-    const box = new Box3();
+    const points = neighbourhoodPoints(mesh, s);
     const spec = selectionHighlight(mesh, s, this.convention);
-    for (const { id } of spec.vertices) box.expandByPoint(new Vector3(...mesh.position(id)));
+    for (const { id } of spec.vertices) points.push(new Vector3(...mesh.position(id)));
     for (const { id } of spec.halfedges) {
-      box.expandByPoint(new Vector3(...mesh.position(mesh.heVertex[id])));
-      box.expandByPoint(new Vector3(...mesh.position(mesh.heVertex[mesh.heNext[id]])));
+      points.push(new Vector3(...mesh.position(mesh.heVertex[id])), new Vector3(...mesh.position(mesh.heVertex[mesh.heNext[id]])));
     }
-    box.expandByScalar(box.getSize(new Vector3()).length() * 0.6 + 1e-9);
+    const box = new Box3().setFromPoints(points);
+    const centre = box.getCenter(new Vector3());
+    // a sphere around the points, with a margin for the arrows and labels at the rim
+    const radius = 1.1 * Math.max(1e-9, ...points.map((p) => p.distanceTo(centre)));
     // close up, an element facing away would be seen from inside the surface: look at its front
     const facing = selectionFacing(mesh, s);
     const direction = this.viewer.camera.position.clone().sub(this.viewer.controls.target);
-    this.viewer.frame(box, this.viewNormal(), undefined, facing && facing.dot(direction) < 0 ? facing : undefined);
+    this.viewer.frame(box, this.viewNormal(), radius, facing && facing.dot(direction) < 0 ? facing : undefined);
   }
 
   /** The direction the top view looks along: the plane of a 2D mesh, else z. */
@@ -424,6 +434,32 @@ export class App {
     this.afterSelect();
   }
 
+  /**
+   * A file that had to be repaired says so as it opens, in the status line, with the way to the
+   * list; and its first culprit is selected and framed, seen from its front, so it is not missed.
+   */
+  private announceRepairs(name: string, repairs: Repair[]): void {
+    for (const repair of repairs) {
+      const incident = repair.incidents.find((i) => incidentTarget(i) !== null);
+      if (!incident) continue;
+      this.showProblem(incident, repair.kind, incidentTarget(incident)!);
+      this.frameSelection();
+      break;
+    }
+    const more = repairs.length > 1 ? ` (and ${repairs.length - 1} more kind${repairs.length > 2 ? 's' : ''} of repair)` : '';
+    this.say(`Opened ${name}, repaired: ${repairs[0].message}${more}.`, 'status', { label: 'Show the repairs', run: () => this.showRepairs() });
+  }
+
+  /** The File tab, with the list of repairs open. */
+  showRepairs(): void {
+    this.showTab('file');
+    const first = document.querySelector<HTMLDetailsElement>('#file-info details[data-repair]');
+    if (first) {
+      first.open = true;
+      first.querySelector('summary')?.focus();
+    }
+  }
+
   /** Selects the first element of a repair and marks all of its elements as problems. */
   showProblem(incident: RepairIncident, kind: string, first: Selection): void {
     if (!this.mesh) return;
@@ -492,13 +528,14 @@ export class App {
     return pick({ viewer: this.viewer, surface: this.surface, mesh: this.mesh, shown: this.arrows.shown, scale: this.scale }, x, y, filter);
   }
 
-  /** Shows a sentence in the status line (`alert` for errors: read out at once). */
-  say(message: string, role: 'status' | 'alert' = 'status'): void {
+  /** Shows a sentence in the status line (`alert` for errors: read out at once), with a button for what follows from it. */
+  say(message: string, role: 'status' | 'alert' = 'status', action?: { label: string; run: () => void }): void {
     this.message = message;
     const status = byId('status');
     status.setAttribute('role', role);
     status.classList.toggle('error', role === 'alert');
     status.textContent = message;
+    if (action) status.append(' ', el('button', { type: 'button', class: 'link status-action', onclick: action.run }, action.label));
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -709,16 +746,27 @@ function idLabels(mesh: HalfedgeMesh): HighlightSpec {
   return spec;
 }
 
+/** The faces at a selection: the face itself, the two beside a halfedge or edge, the fan of a vertex. */
+function facesAt(mesh: HalfedgeMesh, s: Selection): number[] {
+  if (s.kind === 'face') return [s.id];
+  if (s.kind === 'halfedge' || s.kind === 'edge') {
+    const h = s.kind === 'edge' ? 2 * s.id : s.id;
+    return [mesh.heFace[h], mesh.heFace[h ^ 1]].filter((f) => f >= 0);
+  }
+  return [...vertexAdjacentFaces(mesh, s.id)];
+}
+
 /** The way the faces at a selection face (the sum of their vector areas), or null when it has none. */
 function selectionFacing(mesh: HalfedgeMesh, s: Selection): Vector3 | null {
-  const faces: number[] = [];
-  if (s.kind === 'face') faces.push(s.id);
-  else if (s.kind === 'halfedge' || s.kind === 'edge') {
-    const h = s.kind === 'edge' ? 2 * s.id : s.id;
-    faces.push(mesh.heFace[h], mesh.heFace[h ^ 1]);
-  } else faces.push(...vertexAdjacentFaces(mesh, s.id));
   const sum = new Vector3();
   const area = [0, 0, 0];
-  for (const f of faces) if (f >= 0) sum.add(new Vector3(...faceVectorArea(mesh, f, area)));
+  for (const f of facesAt(mesh, s)) sum.add(new Vector3(...faceVectorArea(mesh, f, area)));
   return sum.lengthSq() > 0 ? sum.normalize() : null;
+}
+
+/** The corners of the faces at a selection (its neighbourhood, which framing shows whole). */
+function neighbourhoodPoints(mesh: HalfedgeMesh, s: Selection): Vector3[] {
+  const points: Vector3[] = [];
+  for (const f of facesAt(mesh, s)) for (const v of faceVertices(mesh, f)) points.push(new Vector3(...mesh.position(v)));
+  return points;
 }

@@ -62,7 +62,8 @@ export function renderFileInfo(
   replace(container, facts, list('Notes', file.notes), list('Comments in the file', file.comments), repairs);
 }
 
-function incidentTarget(incident: { vertices?: number[]; faces?: number[]; halfedges?: number[] }): Selection | null {
+/** The element a repair incident is shown at: its last vertex (a copy the repair made), else face or halfedge. */
+export function incidentTarget(incident: { vertices?: number[]; faces?: number[]; halfedges?: number[] }): Selection | null {
   if (incident.vertices?.length) return { kind: 'vertex', id: incident.vertices.at(-1)! };
   if (incident.faces?.length) return { kind: 'face', id: incident.faces.at(-1)! };
   if (incident.halfedges?.length) return { kind: 'halfedge', id: incident.halfedges[0] };
