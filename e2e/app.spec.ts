@@ -38,6 +38,18 @@ test.describe('the teaching app', () => {
     expect(record.twin).toBe('h16');
   });
 
+  // a record link used to start a new walk, so Back did nothing
+  test('follows a pointer of the record as a step of the walk, which Back undoes', async ({ page }) => {
+    await openApp(page, 'disk.off');
+    await page.evaluate(() => window.halfedgeLab.select('h0'));
+    const { next, face } = await page.evaluate(() => window.halfedgeLab.record('h0'));
+    await page.getByRole('button', { name: `next: select ${next}` }).click();
+    await page.getByRole('button', { name: `face: select ${face}` }).click();
+    await expect(page.locator('#breadcrumb')).toHaveText(`h0 → next → ${next} → face → ${face}`);
+    await page.getByRole('button', { name: 'Back' }).click();
+    expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe(next);
+  });
+
   test('walks next, twin and prev from the keyboard, with the breadcrumb and Back', async ({ page }) => {
     await openApp(page, 'disk.off');
     await page.evaluate(() => window.halfedgeLab.select('h0'));

@@ -41,7 +41,7 @@ import { PlaneGizmo } from './scene/plane-gizmo.js';
 import { SurfaceLayer } from './scene/surface.js';
 import { Viewer } from './scene/viewer.js';
 import { handleKey } from './keys.js';
-import { elementName, exists, type Move, type Selection, walk, type WalkStep } from './selection.js';
+import { elementName, exists, isMove, type Move, type Selection, walk, type WalkStep } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, type ViewState } from './share.js';
 
@@ -483,6 +483,7 @@ export class App {
     byId('walk-message').textContent = '';
     this.selection = to;
     this.path.push({ move, to });
+    if (this.quizSpec) this.quiz.end();
     this.afterSelect();
     return true;
   }
@@ -570,7 +571,9 @@ export class App {
 
   private drawPanels(): void {
     const snapshot = this.snapshot;
-    renderInspector(byId('record'), byId('convention-note'), this.mesh, this.selection, this.convention, (s) => this.select(s));
+    // a pointer in the record is a step of the walk (Back returns); anything else starts a new one
+    const follow = (field: string, s: Selection) => void (isMove(field) ? this.walk(field) : this.select(s));
+    renderInspector(byId('record'), byId('convention-note'), this.mesh, this.selection, this.convention, follow);
     renderBreadcrumb(byId('breadcrumb'), this.path);
     if (this.mesh && snapshot) this.operations.update(this.mesh, this.selection, snapshot.unavailable);
     if (snapshot) {

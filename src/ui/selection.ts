@@ -109,6 +109,17 @@ export interface WalkStep {
   to: Selection;
 }
 
+/** Steps the breadcrumb shows; a longer walk shows its start, how many steps it leaves out, and its last ones. */
+export const MAX_BREADCRUMB_STEPS = 8;
+
 export function breadcrumbText(path: WalkStep[]): string {
-  return path.map((step) => (step.move ? `${step.move} → ${elementName(step.to)}` : elementName(step.to))).join(' → ');
+  const text = (step: WalkStep) => (step.move ? `${step.move} → ${elementName(step.to)}` : elementName(step.to));
+  if (path.length <= MAX_BREADCRUMB_STEPS) return path.map(text).join(' → ');
+  const tail = path.slice(-(MAX_BREADCRUMB_STEPS - 1));
+  return [text(path[0]), `… ${path.length - 1 - tail.length} steps …`, ...tail.map(text)].join(' → ');
+}
+
+/** True when a record's field names a pointer the walk can follow (`next`, `origin`, `halfedge`, …). */
+export function isMove(field: string): field is Move {
+  return (['next', 'prev', 'twin', 'face', 'origin', 'target', 'edge', 'halfedge', 'twin.next', 'prev.twin'] as string[]).includes(field);
 }

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { buildMesh, disk, fan, seededRandom, torus } from '../../src/index.js';
 import { hopsFor, isRight, makeQuestion } from '../../src/ui/quiz.js';
 import { traversals } from '../../src/ui/panels/traversal.js';
-import { walk } from '../../src/ui/selection.js';
+import { breadcrumbText, elementName, isMove, MAX_BREADCRUMB_STEPS, type Selection, walk, type WalkStep } from '../../src/ui/selection.js';
 import { decodeViewState, encodeViewState } from '../../src/ui/share.js';
 
 describe('quiz questions', () => {
@@ -82,5 +82,25 @@ describe('share links', () => {
       camera: null,
       mode: null,
     });
+  });
+});
+
+describe('the breadcrumb', () => {
+  it('shows a short walk whole, and a long one as its start, how many steps are left out, and its last steps', () => {
+    const { mesh } = buildMesh(torus(6, 5));
+    const path: WalkStep[] = [{ move: null, to: { kind: 'halfedge', id: 0 } }];
+    for (let i = 0; i < 3; i++) path.push({ move: 'next', to: walk(mesh, path[path.length - 1]!.to, 'next') as Selection });
+    expect(breadcrumbText(path)).toBe(`h0 → next → ${path.slice(1).map((s) => elementName(s.to)).join(' → next → ')}`);
+    for (let i = 0; i < 20; i++) path.push({ move: 'twin', to: walk(mesh, path[path.length - 1]!.to, 'twin') as Selection });
+    const text = breadcrumbText(path);
+    expect(text.startsWith(`h0 → … ${path.length - MAX_BREADCRUMB_STEPS} steps … → twin → `)).toBe(true);
+    // the start, the gap, and the last MAX − 1 steps
+    expect(text.split(' → ')).toHaveLength(2 + 2 * (MAX_BREADCRUMB_STEPS - 1));
+    expect(text.endsWith(elementName(path[path.length - 1]!.to))).toBe(true);
+  });
+
+  it('follows only the record fields that are pointers', () => {
+    expect(['next', 'origin', 'target', 'halfedge', 'edge'].every(isMove)).toBe(true);
+    expect(['position', 'degree', 'boundary', ''].some(isMove)).toBe(false);
   });
 });

@@ -1,7 +1,8 @@
 /**
  * The record panel: the selected element printed like a debugger would,
  * `h17 { next: h18, prev: h19, twin: h16, origin: v4, face: f5, edge: e8 }`, each value a link
- * (a button) that selects it, coloured as in the legend.
+ * (a button) that follows that pointer as a step of the walk (so Back returns), coloured as in
+ * the legend.
  */
 import type { HalfedgeMesh } from '../../core/index.js';
 import { colors, type PointerRole } from '../colors.js';
@@ -17,7 +18,7 @@ export function renderInspector(
   mesh: HalfedgeMesh | null,
   selection: Selection | null,
   convention: Convention,
-  select: (s: Selection) => void,
+  follow: (field: string, s: Selection) => void,
 ): void {
   note.textContent = conventionNote[convention];
   if (!mesh || !selection) {
@@ -37,7 +38,7 @@ export function renderInspector(
               class: 'link',
               'data-element': elementName(value.element),
               'aria-label': `${field || 'also'}: select ${elementName(value.element)}`,
-              onclick: () => select(value.element),
+              onclick: () => follow(field, value.element),
             },
             elementName(value.element),
           )
