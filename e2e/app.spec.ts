@@ -1,6 +1,6 @@
 import { expect, test } from '@playwright/test';
 import { colors } from '../src/ui/colors.js';
-import { appErrors, canvasPixel, clickCanvas, colourDistance, hexToRgb, openApp } from './helpers.js';
+import { appErrors, canvasPixel, clickCanvas, colourDistance, hexToRgb, onCanvas, openApp } from './helpers.js';
 
 test.describe('the teaching app', () => {
   test('opens the built-in sample and shows its counts with every invariant holding', async ({ page }, testInfo) => {
@@ -94,6 +94,52 @@ test.describe('the teaching app', () => {
     const [r, g, b] = await canvasPixel(page, face.x, face.y);
     expect(g).toBeGreaterThan(r + 20);
     expect(g).toBeGreaterThan(b - 10);
+  });
+
+  test('the tables scroll to the right row, list no deleted slots, and a row out of sight is framed', async ({ page }) => {
+    await openApp(page, 'torus.off');
+    // switching tables: the halfedge table used to keep the vertex table's (shorter) scroll limit
+    await page.evaluate(() => window.halfedgeLab.select('v10'));
+    await page.evaluate(() => window.halfedgeLab.select('h480'));
+    await expect(page.locator('#tables [data-element="h480"]')).toBeInViewport();
+    await page.locator('[data-table="vertex"]').click();
+    await page.locator('[data-table="halfedge"]').click();
+    await expect(page.locator('#tables [data-element="h480"]')).toBeInViewport();
+
+    // after a cut, deleted slots are no rows
+    await page.evaluate(() => window.halfedgeLab.start({ kind: 'cut', plane: [0, 0, 1, 0], keep: 'above' }));
+    await page.evaluate(() => window.halfedgeLab.runToEnd());
+    await expect(page.locator('#tables .table-row:not(.table-head)').first()).toBeVisible();
+    await expect(page.locator('#tables')).not.toContainText('deleted');
+
+    // a row whose element is out of sight brings the camera to it (zoomed in close on one vertex,
+    // most of the others are off screen)
+    const vertices = await page.evaluate(() => window.halfedgeLab.state().stats!.vertices);
+    await page.evaluate((v) => window.halfedgeLab.select(`v${v}`), vertices - 1);
+    await page.keyboard.press('z');
+    await page.locator('#tables .table-body').evaluate((body) => (body.scrollTop = 0));
+    await page.evaluate(() => new Promise(requestAnimationFrame));
+    const rows = await page.evaluate(() => {
+      const names: string[] = [];
+      for (const row of document.querySelectorAll<HTMLElement>('#tables .table-row[data-element]')) names.push(row.dataset.element!);
+      return names;
+    });
+    let hidden = '';
+    for (const name of rows) {
+      const at = await page.evaluate((n) => window.halfedgeLab.screenPosition(n), name);
+      if (!(at.visible && (await onCanvas(page, at.x, at.y)))) {
+        hidden = name;
+        break;
+      }
+    }
+    expect(hidden, 'a row whose element is out of sight').not.toBe('');
+    await page.locator(`#tables [data-element="${hidden}"]`).click();
+    await expect
+      .poll(async () => {
+        const at = await page.evaluate((n) => window.halfedgeLab.screenPosition(n), hidden);
+        return at.visible && (await onCanvas(page, at.x, at.y));
+      })
+      .toBe(true);
   });
 
   test('the record tables follow the selection, and a row click selects', async ({ page }) => {

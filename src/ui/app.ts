@@ -121,7 +121,7 @@ export class App {
     this.viewer.add(this.gizmo.group);
     this.viewer.controls.addEventListener('end', () => this.refreshArrowsIfPartial());
     this.viewer.beforeDraw = () => this.fitDetail();
-    this.tables = new RecordTables(byId('tables'), (s) => this.select(s), (s) => this.hover(s));
+    this.tables = new RecordTables(byId('tables'), (s) => this.selectInSight(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
       byId('traversal'),
       () => ({ mesh: this.mesh, selection: this.selection, convention: this.convention }),
@@ -458,6 +458,29 @@ export class App {
       first.open = true;
       first.querySelector('summary')?.focus();
     }
+  }
+
+  /**
+   * Selects an element chosen away from the view (a row of the tables), and frames it when it is
+   * out of sight: off screen, behind the camera, or seen edge-on or from behind.
+   */
+  selectInSight(selection: Selection): void {
+    this.select(selection);
+    if (this.mesh && !this.inSight(this.mesh, selection)) this.frameSelection();
+  }
+
+  private inSight(mesh: HalfedgeMesh, s: Selection): boolean {
+    const points = neighbourhoodPoints(mesh, s);
+    if (s.kind === 'vertex') points.push(new Vector3(...mesh.position(s.id)));
+    if (points.length === 0) return true;
+    const centre = points.reduce((sum, p) => sum.add(p), new Vector3()).divideScalar(points.length);
+    const { x, y, visible } = this.viewer.project(centre);
+    const { width, height } = this.viewer.size();
+    const onScreen = visible && x >= 0 && y >= 0 && x <= width && y <= height;
+    const facing = selectionFacing(mesh, s);
+    const toCamera = this.viewer.camera.position.clone().sub(centre).normalize();
+    // a face seen at less than about 17° from edge-on, or from behind, is not seen
+    return onScreen && (!facing || facing.dot(toCamera) > 0.3);
   }
 
   /** Selects the first element of a repair and marks all of its elements as problems. */

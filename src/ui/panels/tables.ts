@@ -2,7 +2,8 @@
  * De Berg-style record tables (vertices, faces, halfedges), linked both ways with the 3D view:
  * hovering a row previews the element, clicking selects it, and a selection made elsewhere
  * scrolls its row into view. Only the rows on screen exist in the page (virtual scrolling), so a
- * 100k-face mesh scrolls as smoothly as a cube. Each table exports as CSV.
+ * 100k-face mesh scrolls as smoothly as a cube. Deleted slots (an operation leaves them until the
+ * mesh is compacted) are not rows: the tables list the mesh as it is. Each table exports as CSV.
  */
 import type { HalfedgeMesh } from '../../core/index.js';
 import { el, replace } from '../dom.js';
@@ -70,11 +71,35 @@ function isDeleted(mesh: HalfedgeMesh, kind: ElementKind, id: number): boolean {
   return mesh.eDeleted[id >> 1] === 1;
 }
 
+/** The live ids of a table, in order (row i shows element `ids[i]`), or null when none is deleted. */
+function liveIds(mesh: HalfedgeMesh, spec: TableSpec): Int32Array | null {
+  const count = spec.count(mesh);
+  const live: number[] = [];
+  for (let id = 0; id < count; id++) if (!isDeleted(mesh, spec.kind, id)) live.push(id);
+  return live.length === count ? null : Int32Array.from(live);
+}
+
+/** The row of element `id` in a table whose rows are `ids` (null: every id), or -1 when it has none. */
+function rowOf(ids: Int32Array | null, id: number): number {
+  if (!ids) return id;
+  let lo = 0;
+  let hi = ids.length - 1;
+  while (lo <= hi) {
+    const mid = (lo + hi) >> 1;
+    if (ids[mid] === id) return mid;
+    if (ids[mid] < id) lo = mid + 1;
+    else hi = mid - 1;
+  }
+  return -1;
+}
+
 export class RecordTables {
   private spec = tableSpecs[2];
   private mesh: HalfedgeMesh | null = null;
   private convention: Convention = 'origin';
   private selected: Selection | null = null;
+  /** The current table's rows as element ids (null: row i is element i). */
+  private ids: Int32Array | null = null;
   private readonly tabs: HTMLButtonElement[];
   private readonly header = el('div', { class: 'table-row table-head', role: 'row' });
   private readonly table = el('div', { class: 'table', role: 'table' });
@@ -103,24 +128,43 @@ export class RecordTables {
   setMesh(mesh: HalfedgeMesh, convention: Convention): void {
     this.mesh = mesh;
     this.convention = convention;
+    this.ids = liveIds(mesh, this.spec);
     this.render();
   }
 
+  /** Shows another table, at the selected element's row when it is one of that table's, else at the top. */
   show(kind: ElementKind): void {
-    this.spec = tableSpecs.find((s) => s.kind === kind) ?? this.spec;
-    this.body.scrollTop = 0;
-    this.render();
+    this.switchTo(kind);
+    this.scrollToRow(this.selected?.kind === kind ? rowOf(this.ids, this.selected.id) : 0, 'top');
   }
 
   /** Marks the selected element's row and scrolls it into view (switching tables if needed). */
   reveal(selection: Selection | null): void {
     this.selected = selection;
     if (selection && selection.kind !== 'edge') {
-      if (selection.kind !== this.spec.kind) this.spec = tableSpecs.find((s) => s.kind === selection.kind)!;
-      const top = selection.id * ROW_HEIGHT;
-      if (top < this.body.scrollTop || top + ROW_HEIGHT > this.body.scrollTop + this.body.clientHeight) {
-        this.body.scrollTop = Math.max(0, top - this.body.clientHeight / 2);
-      }
+      if (selection.kind !== this.spec.kind) this.switchTo(selection.kind);
+      this.scrollToRow(rowOf(this.ids, selection.id), 'into view');
+    }
+    this.render();
+  }
+
+  /**
+   * Switches tables and sizes the scroll area to the new one before anything scrolls: a scroll
+   * position set first would be cut to the old table's length, and show the wrong row.
+   */
+  private switchTo(kind: ElementKind): void {
+    this.spec = tableSpecs.find((s) => s.kind === kind) ?? this.spec;
+    this.ids = this.mesh ? liveIds(this.mesh, this.spec) : null;
+    this.render();
+  }
+
+  /** Scrolls row `row` to the top, or into view (to the middle, only when it is out of sight). */
+  private scrollToRow(row: number, where: 'top' | 'into view'): void {
+    if (row < 0) return;
+    const top = row * ROW_HEIGHT;
+    if (where === 'top') this.body.scrollTop = top;
+    else if (top < this.body.scrollTop || top + ROW_HEIGHT > this.body.scrollTop + this.body.clientHeight) {
+      this.body.scrollTop = Math.max(0, top - this.body.clientHeight / 2);
     }
     this.render();
   }
@@ -157,19 +201,18 @@ export class RecordTables {
     replace(this.header, ...this.spec.columns(this.convention).map((c) => el('span', { role: 'columnheader' }, c)));
     const mesh = this.mesh;
     if (!mesh) return;
-    const count = this.spec.count(mesh);
+    const ids = this.ids;
+    const count = ids ? ids.length : this.spec.count(mesh);
     this.spacer.style.height = `${count * ROW_HEIGHT}px`;
     const first = Math.max(0, Math.floor(this.body.scrollTop / ROW_HEIGHT) - OVERSCAN);
     const last = Math.min(count, Math.ceil((this.body.scrollTop + (this.body.clientHeight || 400)) / ROW_HEIGHT) + OVERSCAN);
     this.rows.style.transform = `translateY(${first * ROW_HEIGHT}px)`;
     const rows: HTMLElement[] = [];
-    for (let id = first; id < last; id++) {
+    for (let row = first; row < last; row++) {
+      const id = ids ? ids[row] : row;
       const self: Selection = { kind: this.spec.kind, id };
-      const deleted = isDeleted(mesh, this.spec.kind, id);
       const isSelected = this.selected?.kind === self.kind && this.selected.id === id;
-      const cells = deleted
-        ? [el('span', { role: 'cell' }, elementName(self)), el('span', { role: 'cell', class: 'note' }, 'deleted')]
-        : this.spec.row(mesh, id, this.convention).map((cell) =>
+      const cells = this.spec.row(mesh, id, this.convention).map((cell) =>
             el(
               'span',
               { role: 'cell' },
@@ -187,7 +230,7 @@ export class RecordTables {
             'data-element': elementName(self),
             'aria-selected': String(isSelected),
             onclick: () => this.select(self),
-            onmouseenter: () => this.hover(deleted ? null : self),
+            onmouseenter: () => this.hover(self),
           },
           ...cells,
         ),
