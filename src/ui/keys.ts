@@ -21,7 +21,7 @@ export const keyBindings: KeyBinding[] = [
   { keys: ['h'], help: 'the halfedge of the selected vertex, face or edge', run: walk },
   { keys: ['r', 'l'], help: 'twin.next / prev.twin: rotate around the origin', run: walk },
   { keys: ['backspace'], help: 'back one step of the walk', run: (app) => app.back() },
-  { keys: ['escape'], help: 'close this help, or clear the selection', run: (app) => (app.helpShown ? app.toggleHelp(false) : app.select(null)) },
+  { keys: ['escape'], help: 'close this help, or clear the selection (and end a quiz question)', run: (app) => (app.helpShown ? app.toggleHelp(false) : app.select(null)) },
   { keys: ['home', 'z'], help: 'frame the mesh / the selection', run: (app, key) => (key === 'home' ? app.frameMesh() : app.frameSelection()) },
   { keys: ['o'], help: 'top view on or off', run: (app) => app.toggleTopView() },
   { keys: ['i'], help: 'label every vertex and face (small meshes)', run: (app) => app.toggleIds() },
