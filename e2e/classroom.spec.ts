@@ -170,6 +170,38 @@ test.describe('the classroom', () => {
     expect(Math.abs(here.x - there.x) + Math.abs(here.y - there.y)).toBeLessThan(2);
   });
 
+  // after a cut, the link used to say ?model=torus.off and open the uncut torus without a word
+  test('a link reproduces what is on screen: the sample and the steps since; a file of the user\'s it cannot carry', async ({ page, context }) => {
+    await openApp(page, 'torus.off');
+    await page.evaluate(async () => {
+      await window.halfedgeLab.start({ kind: 'cut', plane: [0, 0, 1, 0], keep: 'above' });
+      await window.halfedgeLab.runToEnd();
+      await window.halfedgeLab.edit({ kind: 'triangulate-mesh' });
+    });
+    const counts = (p: Page) => p.evaluate(() => window.halfedgeLab.state().stats).then((s) => [s!.vertices, s!.edges, s!.faces]);
+    const here = await counts(page);
+    const link = await page.evaluate(() => window.halfedgeLab.shareLink());
+    expect(link).toContain('model=torus.off');
+    expect(link).toContain('ops=');
+    await expect(page.locator('#status')).toContainText('replays 2 steps');
+    const second = await context.newPage();
+    await second.goto(link);
+    await second.waitForFunction(() => window.halfedgeLab?.state().history?.items.length === 3);
+    expect(await counts(second)).toEqual(here);
+
+    // a file of the user's: the link cannot carry it, and says so; undoing back past it, the menu,
+    // the status line and the link name the sample again
+    const mine = writeSoup(cube(), 'off');
+    expect(await page.evaluate((bytes) => window.halfedgeLab.open(bytes, 'mine.off'), Array.from(mine))).toBe(true);
+    expect(await page.evaluate(() => window.halfedgeLab.shareLink())).not.toContain('model=');
+    await expect(page.locator('#status')).toContainText('a file you opened yourself');
+    await expect(page.locator('#sample-select')).toHaveValue('');
+    await page.evaluate(() => window.halfedgeLab.undo());
+    await expect(page.locator('#sample-select')).toHaveValue('torus.off');
+    await expect(page.locator('#status')).toContainText('on torus.off');
+    expect(await page.evaluate(() => window.halfedgeLab.shareLink())).toContain('model=torus.off');
+  });
+
   test('a link naming a sample or an element that is not here opens what it can and says what is missing', async ({ page }) => {
     await openApp(page, 'no-such-model.ply'); // resolves only once a mesh is drawn
     const { samples, state } = await page.evaluate(async () => ({

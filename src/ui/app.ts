@@ -43,7 +43,7 @@ import { Viewer } from './scene/viewer.js';
 import { handleKey } from './keys.js';
 import { elementName, exists, isMove, type Move, type Selection, walk, type WalkStep } from './selection.js';
 import { isRight } from './quiz.js';
-import { encodeViewState, type ViewState } from './share.js';
+import { encodeViewState, type ReplayStep, type ViewState } from './share.js';
 
 export interface SampleModel {
   file: string;
@@ -171,9 +171,7 @@ export class App {
   async openBytes(bytes: Uint8Array, name: string, sample: string | null = null): Promise<boolean> {
     try {
       this.say(`Reading ${name}…`);
-      const snapshot = await this.client.open(bytes, name);
-      this.sample = sample;
-      byId<HTMLSelectElement>('sample-select').value = sample ?? ''; // blank for a file of the user's
+      const snapshot = await this.client.open(bytes, name, sample);
       this.show(snapshot, true);
       const repairs = snapshot.report?.repairs ?? [];
       if (repairs.length > 0) this.announceRepairs(name, repairs);
@@ -246,13 +244,42 @@ export class App {
     return this.run(() => this.client.edit(request));
   }
   undo() {
-    return this.run(() => this.client.undo());
+    return this.moveInHistory(() => this.client.undo());
   }
   redo() {
-    return this.run(() => this.client.redo());
+    return this.moveInHistory(() => this.client.redo());
   }
   jump(index: number) {
-    return this.run(() => this.client.jump(index));
+    return this.moveInHistory(() => this.client.jump(index));
+  }
+
+  /** Undo, redo or a jump, saying where in the history (and which model) the view now is. */
+  private async moveInHistory(action: () => Promise<Snapshot | null>): Promise<Snapshot | null> {
+    const snapshot = await this.run(action);
+    const open = snapshot && openedEntry(snapshot);
+    if (snapshot && open) {
+      const here = snapshot.history.items[snapshot.history.index]!;
+      this.say(here.source.kind === 'open' ? `Back to ${open.name} as opened.` : `Back to “${here.label}” on ${open.name}.`);
+    }
+    return snapshot;
+  }
+
+  /**
+   * Replays the steps of a link on the model just opened, each operation run to its end; stops at
+   * the first that does not apply, saying which. Returns whether every step ran.
+   */
+  async replay(steps: ReplayStep[]): Promise<boolean> {
+    for (const [i, step] of steps.entries()) {
+      const done =
+        step.kind === 'edit'
+          ? await this.edit(step.request)
+          : (await this.start(step.request)) && (await this.runToEnd());
+      if (!done) {
+        this.say(`This link's step ${i + 1} of ${steps.length} could not be replayed: ${this.message}`, 'alert');
+        return false;
+      }
+    }
+    return true;
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -262,6 +289,9 @@ export class App {
   show(snapshot: Snapshot, frame: boolean): void {
     this.shown = { version: snapshot.version, at: performance.now() };
     this.snapshot = snapshot;
+    // the sample menu names the model the mesh on screen came from, wherever the history is
+    this.sample = openedEntry(snapshot)?.sample ?? null;
+    byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // blank for a file of the user's
     const mesh = (this.mesh = deserializeMesh(snapshot.mesh));
     this.surface.update(snapshot.render);
     // while stepping, a phase may colour the vertices by a value it computed
@@ -366,11 +396,17 @@ export class App {
     else this.gizmo.hide();
   }
 
-  /** Model, selection and camera, for a link that restores them. */
+  /**
+   * Model, steps, selection and camera, for a link that restores them: the sample the mesh on
+   * screen came from and every operation and edit since, or no model when the mesh came from a
+   * file of the user's (or was put back after a restart), which no link can carry.
+   */
   viewState(): ViewState {
     const camera = this.viewer.camera;
+    const { model, steps } = this.snapshot ? replayable(this.snapshot) : { model: null, steps: [] };
     return {
-      model: this.sample,
+      model,
+      steps,
       selection: this.selection,
       camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom },
       mode: this.viewer.mode,
@@ -395,10 +431,11 @@ export class App {
     const state = this.viewState();
     const url = `${location.origin}${location.pathname}?${encodeViewState(state)}`;
     void navigator.clipboard?.writeText(url).catch(() => {});
+    const replays = state.steps.length ? ` It opens ${state.model} and replays ${state.steps.length} step${state.steps.length > 1 ? 's' : ''}.` : '';
     this.say(
       state.model
-        ? `Link copied: ${url}`
-        : `Link copied, without the model: a file you opened yourself never leaves this browser, so a link can only name a sample model. ${url}`,
+        ? `Link copied: ${url}${replays}`
+        : `Link copied, without the model: the mesh on screen comes from a file you opened yourself, which never leaves this browser, so a link can only name a sample model. ${url}`,
     );
     return url;
   }
@@ -795,4 +832,26 @@ function neighbourhoodPoints(mesh: HalfedgeMesh, s: Selection): Vector3[] {
   const points: Vector3[] = [];
   for (const f of facesAt(mesh, s)) for (const v of faceVertices(mesh, f)) points.push(new Vector3(...mesh.position(v)));
   return points;
+}
+
+/** The history entry that opened the model the current mesh came from, or null. */
+function openedEntry(snapshot: Snapshot): { name: string; sample: string | null; index: number } | null {
+  const { items, index } = snapshot.history;
+  for (let i = index; i >= 0; i--) {
+    const source = items[i]!.source;
+    if (source.kind === 'open') return { name: source.name, sample: source.sample, index: i };
+  }
+  return null;
+}
+
+/** The sample and the steps since it that lead to the current mesh; no model when a link cannot say. */
+function replayable(snapshot: Snapshot): { model: string | null; steps: ReplayStep[] } {
+  const open = openedEntry(snapshot);
+  if (!open?.sample) return { model: null, steps: [] };
+  const steps: ReplayStep[] = [];
+  for (const { source } of snapshot.history.items.slice(open.index + 1, snapshot.history.index + 1)) {
+    if (source.kind === 'operation' || source.kind === 'edit') steps.push(source);
+    else return { model: null, steps: [] };
+  }
+  return { model: open.sample, steps };
 }

@@ -77,6 +77,8 @@ export function automation(app: App) {
     undo: () => app.undo().then(summary),
     redo: () => app.redo().then(summary),
     jump: (index: number) => app.jump(index).then(summary),
+    /** The link "Copy link" copies (and copies it): the sample, the steps since it, the selection, the camera. */
+    shareLink: () => app.shareLink(),
     /** The quiz: `ask()` a new question; `question()` the current one, with its answer (for tests). */
     quiz: {
       ask: () => app.quiz.ask()?.text ?? null,

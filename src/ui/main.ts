@@ -18,7 +18,7 @@ async function openFirstModel(): Promise<void> {
   if (!state.model) {
     await app.openSample(first);
   } else if (await app.openSample(state.model)) {
-    app.applyViewState(state);
+    if (await app.replay(state.steps)) app.applyViewState(state);
   } else if (await app.openSample(first)) {
     app.say(`This link names a sample that is not here (${state.model}), so ${first} is open instead.`, 'alert');
   }

@@ -1,12 +1,19 @@
 /**
- * A link that restores what a lecturer shows: the sample model, the selection and the camera.
- * `?model=torus.off&select=h17&camera=…&mode=top`. Uploaded files never leave the browser, so a
- * link can only name a sample model.
+ * A link that restores what a lecturer shows: the sample model, the operations and edits that led
+ * from it to the mesh on screen (replayed on opening), the selection and the camera.
+ * `?model=torus.off&ops=[…]&select=h17&camera=…&mode=top`. Uploaded files never leave the
+ * browser, so a link can only name a sample model.
  */
+import type { EditRequest, OperationRequest } from '../workers/protocol.js';
 import { parseElementName, type Selection } from './selection.js';
+
+/** One step from the sample to what is on screen: an operation run to its end, or a local edit. */
+export type ReplayStep = { kind: 'operation'; request: OperationRequest } | { kind: 'edit'; request: EditRequest };
 
 export interface ViewState {
   model: string | null;
+  /** The steps from the model to the mesh shown, in order. */
+  steps: ReplayStep[];
   selection: Selection | null;
   /** Camera position, orbit target, zoom (orthographic). */
   camera: { position: number[]; target: number[]; zoom: number } | null;
@@ -16,6 +23,7 @@ export interface ViewState {
 export function encodeViewState(state: ViewState): string {
   const params = new URLSearchParams();
   if (state.model) params.set('model', state.model);
+  if (state.steps.length > 0) params.set('ops', JSON.stringify(state.steps));
   if (state.selection) params.set('select', `${{ vertex: 'v', edge: 'e', face: 'f', halfedge: 'h' }[state.selection.kind]}${state.selection.id}`);
   if (state.camera) {
     const numbers = [...state.camera.position, ...state.camera.target, state.camera.zoom].map((x) => +x.toPrecision(6));
@@ -36,8 +44,29 @@ export function decodeViewState(query: string): ViewState {
   const mode = params.get('mode');
   return {
     model: params.get('model'),
+    steps: replaySteps(params.get('ops')),
     selection: parseElementName(params.get('select') ?? ''),
     camera,
     mode: mode === 'top' || mode === 'perspective' ? mode : null,
   };
+}
+
+/**
+ * The steps of a link, each an operation or an edit with a request object; anything else makes
+ * the whole list untrusted and left out (the session checks each request again as it runs it).
+ */
+function replaySteps(text: string | null): ReplayStep[] {
+  if (!text) return [];
+  try {
+    const steps: unknown = JSON.parse(text);
+    const isStep = (step: unknown): step is ReplayStep =>
+      typeof step === 'object' &&
+      step !== null &&
+      ((step as ReplayStep).kind === 'operation' || (step as ReplayStep).kind === 'edit') &&
+      typeof (step as ReplayStep).request === 'object' &&
+      (step as ReplayStep).request !== null;
+    return Array.isArray(steps) && steps.length <= 100 && steps.every(isStep) ? steps : [];
+  } catch {
+    return [];
+  }
 }

@@ -78,7 +78,7 @@ export class SessionClient {
    * Parses and builds a file off the session, then makes it the current mesh. `bytes` is
    * transferred (it is empty afterwards). A parse error leaves the session as it was.
    */
-  async open(bytes: Uint8Array, name: string): Promise<Snapshot> {
+  async open(bytes: Uint8Array, name: string, sample: string | null = null): Promise<Snapshot> {
     this.stopLoading(new CancelledError(`opening ${name} replaced an earlier load`));
     const loader = (this.loader = live<LoaderApi>(this.createLoaderWorker(), () =>
       new WorkerStoppedError(`the loader stopped while reading ${name} (is the file larger than this browser can hold?)`),
@@ -86,7 +86,7 @@ export class SessionClient {
     try {
       const progress = proxy((event: ProgressEvent) => this.onProgress?.(event));
       const loaded = await Promise.race([loader.remote.load(transfer(bytes, [bytes.buffer as ArrayBuffer]), name, progress), loader.stopped]);
-      return await this.call((session) => session.adopt(transfer(loaded, transferables(loaded))));
+      return await this.call((session) => session.adopt(transfer(loaded, transferables(loaded)), sample));
     } finally {
       if (this.loader === loader) this.loader = null;
       loader.worker.terminate();

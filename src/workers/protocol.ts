@@ -77,7 +77,19 @@ export interface HistoryItem {
   label: string;
   vertices: number;
   faces: number;
+  /** What made this entry, so a link can replay the way to it. */
+  source: HistorySource;
 }
+
+/**
+ * What made a history entry: opening a file (`sample`: the sample model it is, null for a file of
+ * the user's), an operation run to its end, a local edit, or a mesh put back after a restart.
+ */
+export type HistorySource =
+  | { kind: 'open'; name: string; sample: string | null }
+  | { kind: 'operation'; request: OperationRequest }
+  | { kind: 'edit'; request: EditRequest }
+  | { kind: 'restore' };
 
 /** The operation being stepped, if any. */
 export interface SteppingState {
@@ -124,7 +136,7 @@ export type ProgressListener = (event: ProgressEvent) => void;
 
 /** The session worker's methods, as the page sees them (every call is asynchronous). */
 export interface SessionApi {
-  adopt(loaded: LoadedFile): Promise<Snapshot>;
+  adopt(loaded: LoadedFile, sample: string | null): Promise<Snapshot>;
   /** Puts back a mesh the page kept (after the worker had to be restarted). */
   restore(mesh: SerializedMesh, label: string): Promise<Snapshot>;
   snapshot(): Promise<Snapshot>;

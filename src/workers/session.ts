@@ -20,11 +20,12 @@ import {
 import { writeMesh, type WriteFormat } from '../core/io/index.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
 import { History } from './history.js';
-import type { FileInfo, LoadedFile, ProgressListener, Snapshot } from './protocol.js';
+import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot } from './protocol.js';
 import { makeSnapshot } from './snapshot.js';
 
 /** What the session remembers with each mesh of the history, to show it again. */
 interface EntryInfo {
+  source: HistorySource;
   report: BuildReport | null;
   file: FileInfo | null;
   phase: Phase | null;
@@ -33,6 +34,8 @@ interface EntryInfo {
 
 interface Stepping {
   label: string;
+  /** The request as run (a subdivision with its level), which the history keeps for links. */
+  request: OperationRequest;
   /** Phases the operation announced, when it knows. */
   total: number | null;
   /** The copy being changed, phase by phase. */
@@ -57,17 +60,21 @@ export class EditingSession {
     this.progress = listener;
   }
 
-  /** Makes a parsed file the current mesh (a new history entry; redo is dropped). */
-  adopt(loaded: LoadedFile): Snapshot {
+  /**
+   * Makes a parsed file the current mesh (a new history entry; redo is dropped). `sample` names
+   * the sample model it is (null: a file of the user's, which no link can carry).
+   */
+  adopt(loaded: LoadedFile, sample: string | null = null): Snapshot {
     const mesh = deserializeMesh(loaded.mesh);
     this.abandonStepping();
-    this.history.push(`open ${loaded.file.name}`, mesh, { report: loaded.report, file: loaded.file, phase: null, diff: null });
+    const source: HistorySource = { kind: 'open', name: loaded.file.name, sample };
+    this.history.push(`open ${loaded.file.name}`, mesh, { source, report: loaded.report, file: loaded.file, phase: null, diff: null });
     return this.snapshot();
   }
 
   restore(serialized: SerializedMesh, label: string): Snapshot {
     this.abandonStepping();
-    this.history.push(label, deserializeMesh(serialized), { report: null, file: null, phase: null, diff: null });
+    this.history.push(label, deserializeMesh(serialized), { source: { kind: 'restore' }, report: null, file: null, phase: null, diff: null });
     return this.snapshot();
   }
 
@@ -84,7 +91,7 @@ export class EditingSession {
     }
     // throws (leaving the session as it was) when the operation does not apply
     const { operation, phases } = startOperation(working, request);
-    this.stepping = { label: operationLabel(request), total: phases, working, operation, phases: 0, phase: null, diff: null };
+    this.stepping = { label: operationLabel(request), request, total: phases, working, operation, phases: 0, phase: null, diff: null };
     return this.snapshot();
   }
 
@@ -124,6 +131,7 @@ export class EditingSession {
     const mesh = current.clone();
     const result = applyEdit(mesh, request); // throws, leaving the session as it was
     this.history.push(result.label, mesh, {
+      source: { kind: 'edit', request },
       report: null,
       file: this.history.entry()!.info.file,
       phase: null,
@@ -173,7 +181,7 @@ export class EditingSession {
       diff: stepping ? stepping.diff : info.diff,
       stepping: stepping ? { label: stepping.label, phases: stepping.phases, total: stepping.total } : null,
       history: {
-        items: this.history.items().map(({ label, vertices, faces }) => ({ label, vertices, faces })),
+        items: this.history.items().map(({ label, vertices, faces, info }) => ({ label, vertices, faces, source: info.source })),
         index: this.history.position,
       },
     });
@@ -203,6 +211,7 @@ export class EditingSession {
     // the operation is over: its result joins the history
     this.stepping = null;
     this.history.push(stepping.label, stepping.working, {
+      source: { kind: 'operation', request: stepping.request },
       report: null,
       file: this.history.entry()!.info.file,
       phase: stepping.phase,

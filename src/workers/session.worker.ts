@@ -9,7 +9,7 @@ const session = new EditingSession();
 const send = (snapshot: Snapshot) => transfer(snapshot, transferables(snapshot));
 
 const api: SessionApi = {
-  adopt: async (loaded) => send(session.adopt(loaded)),
+  adopt: async (loaded, sample) => send(session.adopt(loaded, sample)),
   restore: async (mesh, label) => send(session.restore(mesh, label)),
   snapshot: async () => send(session.snapshot()),
   start: async (request) => send(session.start(request)),

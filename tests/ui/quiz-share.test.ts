@@ -68,6 +68,10 @@ describe('share links', () => {
   it('round-trip the model, selection, camera and mode', () => {
     const state = {
       model: 'torus.off',
+      steps: [
+        { kind: 'operation' as const, request: { kind: 'cut' as const, plane: [0, 0, 1, 0] as [number, number, number, number], keep: 'above' as const } },
+        { kind: 'edit' as const, request: { kind: 'flip-edge' as const, edge: 3 } },
+      ],
       selection: { kind: 'halfedge' as const, id: 17 },
       camera: { position: [1, 2.5, -3], target: [0, 0, 0.25], zoom: 1.5 },
       mode: 'top' as const,
@@ -76,8 +80,9 @@ describe('share links', () => {
   });
 
   it('drop what is malformed instead of trusting it', () => {
-    expect(decodeViewState('model=cube.off&select=x9&camera=1,2,nan&mode=sideways')).toEqual({
+    expect(decodeViewState('model=cube.off&ops=[{"kind":"eval"}]&select=x9&camera=1,2,nan&mode=sideways')).toEqual({
       model: 'cube.off',
+      steps: [],
       selection: null,
       camera: null,
       mode: null,

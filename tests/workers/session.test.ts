@@ -35,7 +35,10 @@ describe('EditingSession', () => {
     expect(snapshot.stats.faces).toBe(6);
     expect(snapshot.problems).toEqual([]);
     expect(snapshot.file?.name).toBe('cube.off');
-    expect(snapshot.history).toEqual({ items: [{ label: 'open cube.off', vertices: 8, faces: 6 }], index: 0 });
+    expect(snapshot.history).toEqual({
+      items: [{ label: 'open cube.off', vertices: 8, faces: 6, source: { kind: 'open', name: 'cube.off', sample: null } }],
+      index: 0,
+    });
     // quads are drawn as two triangles each, remembering their face
     expect(snapshot.render.triangles.length).toBe(6 * 2 * 3);
     expect(Array.from(snapshot.render.triangleFace.subarray(0, 4))).toEqual([0, 0, 1, 1]);
@@ -54,7 +57,13 @@ describe('EditingSession', () => {
     // the last announced phase finishes the operation: no empty step after it
     expect(snapshot.stepping).toBeNull();
     expect(snapshot.history.index).toBe(1);
-    expect(snapshot.history.items[1]).toEqual({ label: 'Loop subdivision', vertices: 10, faces: 16 });
+    // with the request as run (its level counted), for a link to replay
+    expect(snapshot.history.items[1]).toEqual({
+      label: 'Loop subdivision',
+      vertices: 10,
+      faces: 16,
+      source: { kind: 'operation', request: { kind: 'subdivide', scheme: 'loop', level: 0 } },
+    });
     expect(new Set(names).size).toBe(4);
   });
 
