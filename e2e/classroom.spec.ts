@@ -260,3 +260,40 @@ test.describe('the classroom', () => {
     }
   });
 });
+
+test.describe('labels on a projector', () => {
+  for (const [width, height, presentation] of [
+    [1280, 720, false],
+    [1024, 768, true],
+  ] as const) {
+    // the six labels of a selected halfedge used to stack on the arrows they name
+    test(`at ${width} × ${height}${presentation ? ' in presentation mode' : ''}, labels clear their arrows, each other and the overlays`, async ({ page }, testInfo) => {
+      await page.setViewportSize({ width, height });
+      await openApp(page, 'torus.off');
+      await page.evaluate(() => window.halfedgeLab.select('h42'));
+      if (presentation) await page.keyboard.press('m');
+      await page.waitForTimeout(300);
+      await page.keyboard.press('z');
+      await page.waitForTimeout(300);
+      await page.screenshot({ path: testInfo.outputPath(`labels-${width}x${height}.png`) });
+      type Box = { left: number; right: number; top: number; bottom: number };
+      const labels = await page.locator('#viewport .label').evaluateAll((tags) => tags.map((t) => t.getBoundingClientRect().toJSON() as Box));
+      expect(labels.length).toBeGreaterThanOrEqual(5);
+      const overlaps = (a: Box, b: Box) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+      for (let i = 0; i < labels.length; i++) for (let j = i + 1; j < labels.length; j++) expect(overlaps(labels[i]!, labels[j]!), `labels ${i} and ${j}`).toBe(false);
+      for (const id of ['hud', 'legend', 'status']) {
+        const overlay = (await page.locator(`#${id}`).boundingBox())!;
+        const box = { left: overlay.x, right: overlay.x + overlay.width, top: overlay.y, bottom: overlay.y + overlay.height };
+        for (const label of labels) expect(overlaps(label, box), `a label on #${id}`).toBe(false);
+      }
+      // no label sits on the arrows it names (a point on each arrow, as screenPosition gives it)
+      const record = await page.evaluate(() => window.halfedgeLab.record('h42'));
+      const canvas = (await page.locator('#viewport canvas').boundingBox())!;
+      for (const arrow of ['h42', record.next!, record.prev!, record.twin!]) {
+        const at = await page.evaluate((h) => window.halfedgeLab.screenPosition(h), arrow);
+        const [x, y] = [canvas.x + at.x, canvas.y + at.y];
+        for (const label of labels) expect(x > label.left && x < label.right && y > label.top && y < label.bottom, `a label on ${arrow}`).toBe(false);
+      }
+    });
+  }
+});

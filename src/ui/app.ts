@@ -121,6 +121,12 @@ export class App {
     this.viewer.add(this.gizmo.group);
     this.viewer.controls.addEventListener('end', () => this.refreshArrowsIfPartial());
     this.viewer.beforeDraw = () => this.fitDetail();
+    // labels keep off the overlays on the view
+    this.viewer.labelObstacles = () =>
+      ['legend', 'hud', 'status', 'values-legend'].flatMap((id) => {
+        const overlay = byId(id);
+        return overlay.hidden || !overlay.textContent ? [] : [overlay.getBoundingClientRect()];
+      });
     this.tables = new RecordTables(byId('tables'), (s) => this.selectInSight(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
       byId('traversal'),

@@ -68,9 +68,13 @@ export class HighlightLayer {
         spec.halfedges.length,
       );
       const placement = newPlacement();
+      // where labels are drawn too, points along each arrow tell them where not to go
+      const markArrows = spec.labels.length > 0 && spec.halfedges.length <= MAX_MARKED_ARROWS;
       spec.halfedges.forEach(({ id, color }, i) => {
-        writeArrowMatrix(placeArrow(mesh, id, placement, scale), arrows.instanceMatrix.array, 16 * i, this.widthScale);
+        const arrow = placeArrow(mesh, id, placement, scale);
+        writeArrowMatrix(arrow, arrows.instanceMatrix.array, 16 * i, this.widthScale);
         arrows.setColorAt(i, new Color(color));
+        if (markArrows) for (const t of ARROW_MARKS) this.group.add(avoidMarker(arrow.start, arrow.end, t));
       });
       arrows.renderOrder = 2;
       arrows.raycast = () => {};
@@ -184,4 +188,18 @@ function roundDot(): CanvasTexture {
   g.lineWidth = 5;
   g.stroke();
   return new CanvasTexture(canvas);
+}
+
+/** Highlights with more arrows than this (a phase's thousands) have no labels to keep off them. */
+const MAX_MARKED_ARROWS = 40;
+/** Where along an arrow (from its tail, 0, to its tip, 1) labels are kept off. */
+const ARROW_MARKS = [0, 0.25, 0.5, 0.75, 1];
+
+/** An empty element at a point of an arrow, which the label placement keeps labels off. */
+function avoidMarker(start: ArrayLike<number>, end: ArrayLike<number>, t: number): CSS2DObject {
+  const marker = document.createElement('div');
+  marker.className = 'label-avoid';
+  const object = new CSS2DObject(marker);
+  object.position.set(start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1]), start[2] + t * (end[2] - start[2]));
+  return object;
 }

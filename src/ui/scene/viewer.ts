@@ -19,6 +19,7 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
+import { placeLabels } from './label-placement.js';
 import { colors } from '../colors.js';
 
 export type ViewMode = 'perspective' | 'top';
@@ -26,6 +27,8 @@ export type ViewMode = 'perspective' | 'top';
 export class Viewer {
   readonly renderer: WebGLRenderer;
   readonly labels: CSS2DRenderer;
+  /** Screen rectangles the labels keep off (the overlays on the view). */
+  labelObstacles: () => DOMRect[] = () => [];
   readonly scene = new Scene();
   readonly perspective = new PerspectiveCamera(40, 1, 0.01, 1000);
   readonly orthographic = new OrthographicCamera(-1, 1, 1, -1, 0.01, 1000);
@@ -201,7 +204,7 @@ export class Viewer {
     this.beforeDraw?.();
     this.renderer.render(this.scene, this.camera);
     this.labels.render(this.scene, this.camera);
-    spreadLabels(this.labels.domElement);
+    placeLabels(this.labels.domElement, this.labelObstacles());
   }
 }
 
@@ -210,28 +213,4 @@ function boxCorners(box: Box3): Vector3[] {
   const corners: Vector3[] = [];
   for (const x of [min.x, max.x]) for (const y of [min.y, max.y]) for (const z of [min.z, max.z]) corners.push(new Vector3(x, y, z));
   return corners;
-}
-
-/** Above this many labels (every id shown), overlaps are left alone. */
-const MAX_SPREAD_LABELS = 40;
-
-/** Nudges labels down until none overlaps another, so a small face's pointers stay readable. */
-function spreadLabels(root: HTMLElement): void {
-  const tags = [...root.querySelectorAll<HTMLElement>('.label')];
-  if (tags.length > MAX_SPREAD_LABELS) return;
-  for (const tag of tags) tag.style.transform = '';
-  const placed: DOMRect[] = [];
-  for (const tag of tags) {
-    let rect = tag.getBoundingClientRect();
-    let shift = 0;
-    for (let tries = 0; tries < tags.length; tries++) {
-      const clash = placed.find((r) => r.left < rect.right && rect.left < r.right && r.top < rect.bottom && rect.top < r.bottom);
-      if (!clash) break;
-      const step = clash.bottom - rect.top + 2;
-      shift += step;
-      rect = new DOMRect(rect.x, rect.y + step, rect.width, rect.height);
-    }
-    if (shift) tag.style.transform = `translateY(${shift}px)`;
-    placed.push(rect);
-  }
 }
