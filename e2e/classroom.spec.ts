@@ -261,6 +261,18 @@ test.describe('the classroom', () => {
   });
 });
 
+test('K hides the legend and the counts, leaving the view to the mesh, and shows them again', async ({ page }) => {
+  await openApp(page, 'torus.off');
+  await expect(page.locator('#legend')).toBeVisible();
+  await page.keyboard.press('k');
+  await expect(page.locator('#legend')).toBeHidden();
+  await expect(page.locator('#hud')).toBeHidden();
+  await expect(page.locator('#status')).toContainText('press K to show them');
+  await page.keyboard.press('k');
+  await expect(page.locator('#legend')).toBeVisible();
+  await expect(page.locator('#hud')).toBeVisible();
+});
+
 test.describe('labels on a projector', () => {
   for (const [width, height, presentation] of [
     [1280, 720, false],

@@ -798,6 +798,16 @@ export class App {
     if (show) byId('help-close').focus();
   }
 
+  /**
+   * Hides the overlays on the view (legend and counts) or shows them again: for a demo where the
+   * mesh alone should fill the screen. The status line stays: it says what just happened.
+   */
+  toggleOverlays(): void {
+    const hidden = document.documentElement.classList.toggle('overlays-hidden');
+    this.say(hidden ? 'Legend and counts hidden: press K to show them.' : 'Legend and counts shown.');
+    this.viewer.requestRender();
+  }
+
   toggleIds(): void {
     this.showIds = !this.showIds;
     byId('show-ids').setAttribute('aria-pressed', String(this.showIds));

@@ -25,6 +25,7 @@ export const keyBindings: KeyBinding[] = [
   { keys: ['home', 'z'], help: 'frame the mesh / the selection', run: (app, key) => (key === 'home' ? app.frameMesh() : app.frameSelection()) },
   { keys: ['o'], help: 'top view on or off', run: (app) => app.toggleTopView() },
   { keys: ['i'], help: 'label every vertex and face (small meshes)', run: (app) => app.toggleIds() },
+  { keys: ['k'], help: 'hide or show the legend and the counts on the view', run: (app) => app.toggleOverlays() },
   {
     keys: ['s', 'g', 'x'],
     help: 'step the operation / run it to the end / cancel it',
