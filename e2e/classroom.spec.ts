@@ -298,6 +298,13 @@ test.describe('labels on a projector', () => {
         const box = { left: overlay.x, right: overlay.x + overlay.width, top: overlay.y, bottom: overlay.y + overlay.height };
         for (const label of labels) expect(overlaps(label, box), `a label on #${id}`).toBe(false);
       }
+      // in presentation mode the overlays are compact, in type the back row reads
+      if (presentation) {
+        for (const id of ['legend', 'hud']) {
+          expect(await page.locator(`#${id}`).evaluate((node) => parseFloat(getComputedStyle(node).fontSize))).toBeGreaterThanOrEqual(20);
+        }
+        await expect(page.locator('#hud')).toContainText('✓ valid');
+      }
       // no label sits on the arrows it names (a point on each arrow, as screenPosition gives it)
       const record = await page.evaluate(() => window.halfedgeLab.record('h42'));
       const canvas = (await page.locator('#viewport canvas').boundingBox())!;

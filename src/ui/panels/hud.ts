@@ -9,22 +9,29 @@ import type { Selection } from '../selection.js';
 
 export function renderHud(container: HTMLElement, stats: MeshStats, problems: Violation[], select: (s: Selection) => void): void {
   const { vertices: V, edges: E, faces: F } = stats;
-  const cell = (label: string, value: string | number, title: string) =>
-    el('div', { class: 'count', title }, el('span', { class: 'count-label' }, label), el('span', { class: 'count-value', 'data-count': label }, String(value)));
+  // `short`: what presentation mode shows instead, on its one compact line
+  const cell = (label: string, value: string | number, title: string, short?: string) =>
+    el(
+      'div',
+      { class: 'count', title },
+      el('span', { class: 'count-label' }, label),
+      el('span', { class: `count-value${short ? ' long' : ''}`, 'data-count': label }, String(value)),
+      short ? el('span', { class: 'count-value short', 'aria-hidden': 'true' }, short) : '',
+    );
   const counts = el(
     'div',
     { class: 'counts' },
     cell('V', V, 'vertices'),
     cell('E', E, 'edges'),
     cell('F', F, 'faces'),
-    cell('χ', `${V} − ${E} + ${F} = ${stats.eulerCharacteristic}`, 'Euler characteristic'),
+    cell('χ', `${V} − ${E} + ${F} = ${stats.eulerCharacteristic}`, 'Euler characteristic', String(stats.eulerCharacteristic)),
     cell('genus', stats.genus ?? '—', stats.orientable ? 'from χ = 2 − 2g − b, summed over components' : 'undefined: the surface is non-orientable'),
     cell('holes', stats.boundaryLoops, 'boundary loops'),
     cell('parts', stats.components, 'connected components'),
   );
   const invariants =
     problems.length === 0
-      ? el('p', { class: 'valid', 'data-valid': 'true' }, '✓ every halfedge invariant holds')
+      ? el('p', { class: 'valid', 'data-valid': 'true' }, el('span', { class: 'long' }, '✓ every halfedge invariant holds'), el('span', { class: 'short', 'aria-hidden': 'true' }, '✓ valid'))
       : el(
           'div',
           { class: 'invalid', 'data-valid': 'false' },

@@ -15,8 +15,14 @@ export interface LegendPhase {
 }
 
 export function renderLegend(container: HTMLElement, phase: LegendPhase | null, convention: Convention): void {
+  // presentation mode shows each label's first word only, to keep the legend to a line or two
   const row = (color: string, label: string) =>
-    el('div', { class: 'legend-row' }, el('span', { class: 'swatch', style: `background:${color}`, 'aria-hidden': 'true' }), label);
+    el(
+      'div',
+      { class: 'legend-row' },
+      el('span', { class: 'swatch', style: `background:${color}`, 'aria-hidden': 'true' }),
+      ...(label.includes(' ') ? [el('span', { class: 'long' }, label), el('span', { class: 'short', 'aria-hidden': 'true' }, label.split(' ')[0]!)] : [label]),
+    );
   container.classList.toggle('stepping', phase !== null);
   if (phase) {
     // the explanation's first sentence: the one that says what the phase does
@@ -33,7 +39,13 @@ export function renderLegend(container: HTMLElement, phase: LegendPhase | null, 
     container,
     // the highlighted vertex is the one the naming names
     ...legend.map(({ role, label }) => row(colors[role], role === 'origin' ? `${convention} vertex` : label)),
-    el('div', { class: 'legend-row' }, el('span', { class: 'swatch dashed', 'aria-hidden': 'true' }), 'boundary halfedge'),
+    el(
+      'div',
+      { class: 'legend-row' },
+      el('span', { class: 'swatch dashed', 'aria-hidden': 'true' }),
+      el('span', { class: 'long' }, 'boundary halfedge'),
+      el('span', { class: 'short', 'aria-hidden': 'true' }, 'boundary'),
+    ),
   );
 }
 
