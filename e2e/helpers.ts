@@ -52,6 +52,26 @@ export async function canvasPixel(page: Page, x: number, y: number): Promise<[nu
   );
 }
 
+/** The smallest colour distance to `colour` among the canvas pixels within `radius` of (x, y). */
+export async function nearestColourDistance(page: Page, x: number, y: number, colour: [number, number, number], radius = 6): Promise<number> {
+  return page.evaluate(
+    ([px, py, r, [cr, cg, cb]]) => {
+      const canvas = document.querySelector('#viewport canvas') as HTMLCanvasElement;
+      const ratio = canvas.width / canvas.clientWidth;
+      const size = Math.round(2 * r * ratio) + 1;
+      const probe = document.createElement('canvas');
+      probe.width = probe.height = size;
+      const context = probe.getContext('2d')!;
+      context.drawImage(canvas, Math.round((px - r) * ratio), Math.round((py - r) * ratio), size, size, 0, 0, size, size);
+      const data = context.getImageData(0, 0, size, size).data;
+      let best = Infinity;
+      for (let i = 0; i < data.length; i += 4) best = Math.min(best, Math.hypot(data[i]! - cr, data[i + 1]! - cg, data[i + 2]! - cb));
+      return best;
+    },
+    [x, y, radius, colour] as const,
+  );
+}
+
 export function hexToRgb(hex: string): [number, number, number] {
   const n = parseInt(hex.slice(1), 16);
   return [(n >> 16) & 255, (n >> 8) & 255, n & 255];

@@ -23,6 +23,18 @@ export const phaseColors = { created: colors.face, moved: colors.selected, rewir
 
 export type PointerRole = 'selected' | 'next' | 'prev' | 'twin' | 'face' | 'origin';
 
+/**
+ * Arrows drawn hollow (a white core inside the colour): the second cue for the two pairs whose
+ * colours come close on a washed-out projector or for a colour-blind student — selected (orange)
+ * and twin (vermillion), next (sky blue) and prev (blue). tests/ui/palette.test.ts checks it.
+ */
+export const hollowRoles: ReadonlySet<PointerRole> = new Set(['prev', 'twin']);
+
+/** The style of a legend swatch for a role: filled, or hollow like its arrows. */
+export function swatchStyle(role: PointerRole): string {
+  return hollowRoles.has(role) ? `background:#fff;box-shadow:inset 0 0 0 3px ${colors[role]}` : `background:${colors[role]}`;
+}
+
 export const legend: Array<{ role: PointerRole; label: string }> = [
   { role: 'selected', label: 'selected halfedge' },
   { role: 'next', label: 'next' },

@@ -4,7 +4,7 @@
  * its loop of halfedges. Pure: it returns a description the highlight layer draws.
  */
 import { faceCentroid, type HalfedgeMesh, type Phase, type RepairIncident } from '../core/index.js';
-import { colors, phaseColors } from './colors.js';
+import { colors, hollowRoles, phaseColors } from './colors.js';
 import type { Convention } from './records.js';
 import { elementName, type Selection } from './selection.js';
 import { emptyHighlight, type HighlightSpec } from './scene/highlight.js';
@@ -25,8 +25,8 @@ function arrowMiddle(mesh: HalfedgeMesh, h: number): Point {
 export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention: Convention): HighlightSpec {
   const spec = emptyHighlight();
   const label = (text: string, at: Point, color: string) => spec.labels.push({ text, at, color });
-  const halfedge = (id: number, color: string, text?: string) => {
-    spec.halfedges.push({ id, color });
+  const halfedge = (id: number, color: string, text?: string, hollow = false) => {
+    spec.halfedges.push({ id, color, hollow });
     if (text) label(text, arrowMiddle(mesh, id), color);
   };
   switch (s.kind) {
@@ -40,8 +40,8 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
         label(`f${face}`, faceCentroid(mesh, face) as Point, colors.face);
       }
       halfedge(next, colors.next, `next h${next}`);
-      if (prev !== next) halfedge(prev, colors.prev, `prev h${prev}`);
-      halfedge(h ^ 1, colors.twin, `twin h${h ^ 1}`);
+      if (prev !== next) halfedge(prev, colors.prev, `prev h${prev}`, hollowRoles.has('prev'));
+      halfedge(h ^ 1, colors.twin, `twin h${h ^ 1}`, hollowRoles.has('twin'));
       halfedge(h, colors.selected, `h${h}`);
       const vertex = convention === 'origin' ? mesh.heVertex[h] : mesh.heVertex[next];
       spec.vertices.push({ id: vertex, color: colors.origin });

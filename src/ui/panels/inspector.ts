@@ -5,7 +5,7 @@
  * the legend.
  */
 import type { HalfedgeMesh } from '../../core/index.js';
-import { colors, type PointerRole } from '../colors.js';
+import { type PointerRole, swatchStyle } from '../colors.js';
 import { el, replace } from '../dom.js';
 import { type Convention, conventionNote, recordOf } from '../records.js';
 import { elementName, type Selection } from '../selection.js';
@@ -28,7 +28,7 @@ export function renderInspector(
   const lines: Array<Node | string> = [`${elementName(selection)} {\n`];
   for (const { field, value } of recordOf(mesh, selection, convention)) {
     const role = roleOfField[field];
-    const swatch = role ? el('span', { class: 'swatch', style: `background:${colors[role]}`, 'aria-hidden': 'true' }) : '';
+    const swatch = role ? el('span', { class: 'swatch', style: swatchStyle(role), 'aria-hidden': 'true' }) : '';
     const shown =
       'element' in value
         ? el(

@@ -3,7 +3,7 @@
  * mean something else, so the legend then says which phase this is, in one sentence, and what
  * the colours mean now: the phase's name would otherwise sit below the fold of the Operate tab.
  */
-import { colors, legend, phaseColors } from '../colors.js';
+import { legend, phaseColors, swatchStyle } from '../colors.js';
 import { el, replace } from '../dom.js';
 import type { Convention } from '../records.js';
 import type { ColourScale } from '../scene/colour-map.js';
@@ -16,11 +16,11 @@ export interface LegendPhase {
 
 export function renderLegend(container: HTMLElement, phase: LegendPhase | null, convention: Convention): void {
   // presentation mode shows each label's first word only, to keep the legend to a line or two
-  const row = (color: string, label: string) =>
+  const row = (style: string, label: string) =>
     el(
       'div',
       { class: 'legend-row' },
-      el('span', { class: 'swatch', style: `background:${color}`, 'aria-hidden': 'true' }),
+      el('span', { class: 'swatch', style, 'aria-hidden': 'true' }),
       ...(label.includes(' ') ? [el('span', { class: 'long' }, label), el('span', { class: 'short', 'aria-hidden': 'true' }, label.split(' ')[0]!)] : [label]),
     );
   container.classList.toggle('stepping', phase !== null);
@@ -31,14 +31,14 @@ export function renderLegend(container: HTMLElement, phase: LegendPhase | null, 
       container,
       el('p', { class: 'legend-phase' }, phase.title),
       sentence ? el('p', { class: 'legend-sentence' }, sentence) : '',
-      ...(['created', 'moved', 'rewired'] as const).map((name) => row(phaseColors[name], name)),
+      ...(['created', 'moved', 'rewired'] as const).map((name) => row(`background:${phaseColors[name]}`, name)),
     );
     return;
   }
   replace(
     container,
     // the highlighted vertex is the one the naming names
-    ...legend.map(({ role, label }) => row(colors[role], role === 'origin' ? `${convention} vertex` : label)),
+    ...legend.map(({ role, label }) => row(swatchStyle(role), role === 'origin' ? `${convention} vertex` : label)),
     el(
       'div',
       { class: 'legend-row' },

@@ -23,7 +23,8 @@ import { newPlacement, placeArrow } from './arrow-placement.js';
 import { arrowShape, writeArrowMatrix } from './arrows.js';
 
 export interface HighlightSpec {
-  halfedges: Array<{ id: number; color: string }>;
+  /** `hollow`: drawn with a white core, the second cue beside the colour (see `hollowRoles`). */
+  halfedges: Array<{ id: number; color: string; hollow?: boolean }>;
   faces: Array<{ id: number; color: string }>;
   vertices: Array<{ id: number; color: string }>;
   edges: Array<{ id: number; color: string }>;
@@ -79,6 +80,8 @@ export class HighlightLayer {
       arrows.renderOrder = 2;
       arrows.raycast = () => {};
       this.group.add(arrows);
+      const hollow = spec.halfedges.filter((h) => h.hollow);
+      if (hollow.length) this.group.add(this.hollowCores(mesh, hollow.map((h) => h.id), scale));
     }
     if (spec.edges.length) {
       const points: number[] = [];
@@ -119,6 +122,31 @@ export class HighlightLayer {
       label.position.set(...at);
       this.group.add(label);
     }
+  }
+
+  /**
+   * White cores inside arrows (a shorter, narrower arrow on top), which makes them read as hollow.
+   */
+  private hollowCores(mesh: HalfedgeMesh, ids: number[], scale: number): InstancedMesh {
+    const cores = new InstancedMesh(
+      shape,
+      new MeshBasicMaterial({ color: 0xffffff, side: DoubleSide, transparent: this.opacity < 1, opacity: this.opacity, polygonOffset: true, polygonOffsetFactor: -2, polygonOffsetUnits: -8 }),
+      ids.length,
+    );
+    const placement = newPlacement();
+    ids.forEach((id, i) => {
+      const arrow = placeArrow(mesh, id, placement, scale);
+      // the core starts a little after the tail and ends well before the tip, inside the head
+      const along = [0, 1, 2].map((k) => arrow.end[k] - arrow.start[k]);
+      for (let k = 0; k < 3; k++) {
+        arrow.start[k] += 0.08 * along[k];
+        arrow.end[k] -= 0.12 * along[k];
+      }
+      writeArrowMatrix(arrow, cores.instanceMatrix.array, 16 * i, this.widthScale * 0.4);
+    });
+    cores.renderOrder = 2.5;
+    cores.raycast = () => {};
+    return cores;
   }
 
   clear(): void {
