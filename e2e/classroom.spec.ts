@@ -152,6 +152,11 @@ test.describe('the classroom', () => {
     expect(layout.wideCells).toBe(0);
     expect(layout.stage.width).toBeGreaterThan(0.6 * 1024);
     expect(layout.stage.height).toBeGreaterThan(0.5 * 768);
+    // the key help fits: its Close button used to sit below the bottom of the screen
+    await page.keyboard.press('?');
+    await expect(page.getByRole('button', { name: 'Close the key help' })).toBeInViewport({ ratio: 1 });
+    await page.keyboard.press('Escape');
+    await expect(page.locator('#help-overlay')).toBeHidden();
   });
 
   test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
