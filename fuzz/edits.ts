@@ -13,7 +13,9 @@ import fc from 'fast-check';
 import { buildMesh } from '../src/core/build.js';
 import { cutMesh } from '../src/core/cut/index.js';
 import { cannotDecimate, decimate } from '../src/core/decimation/index.js';
+import { applyChange } from '../src/core/change.js';
 import { diffPointers } from '../src/core/diff.js';
+import { meshFingerprint } from '../src/core/fingerprint.js';
 import {
   canCollapseEdge,
   canFlipEdge,
@@ -125,6 +127,14 @@ export class Step implements fc.Command<object, Real> {
     if (result) {
       const found = JSON.stringify(diffPointers(before, mesh, Infinity).changes);
       if (JSON.stringify(result.changes) !== found) throw fail(`${plan.name} reported other pointer changes than it made`);
+      if (result.record) {
+        // the record is the undo entry: backwards it must give the mesh before, forwards the mesh after
+        const after = meshFingerprint(mesh);
+        applyChange(mesh, result.record, 'backward');
+        if (meshFingerprint(mesh) !== meshFingerprint(before)) throw fail(`${plan.name}: its change record, undone, does not give the mesh before`);
+        applyChange(mesh, result.record, 'forward');
+        if (meshFingerprint(mesh) !== after) throw fail(`${plan.name}: its change record, redone, does not give the mesh after`);
+      }
     }
     const difference = reloadDifference(mesh);
     if (difference) throw fail(`${plan.name}: saved and read back, ${difference}`);

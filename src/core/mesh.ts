@@ -35,6 +35,7 @@
  */
 import { AttributeSet } from './attributes.js';
 import { InvalidInputError, TopologyError } from './errors.js';
+import { attributeSetOf, type ElementKind, elementKinds, meshArrays, setMeshArray, slotCount } from './mesh-arrays.js';
 
 export interface MeshCapacity {
   vertices: number;
@@ -51,21 +52,21 @@ export interface CompactionMaps {
 
 export class HalfedgeMesh {
   /** Next halfedge around the face (or hole) on the left. */
-  heNext: Int32Array;
+  heNext!: Int32Array;
   /** Previous halfedge around the face (or hole) on the left. */
-  hePrev: Int32Array;
+  hePrev!: Int32Array;
   /** The vertex a halfedge starts from. */
-  heVertex: Int32Array;
+  heVertex!: Int32Array;
   /** The face on the left, or -1 for a boundary halfedge. */
-  heFace: Int32Array;
+  heFace!: Int32Array;
   /** One outgoing halfedge per vertex: the boundary one on the boundary, -1 when isolated. */
-  vHalfedge: Int32Array;
+  vHalfedge!: Int32Array;
   /** One halfedge of each face. */
-  fHalfedge: Int32Array;
+  fHalfedge!: Int32Array;
   /** 1 where the slot is deleted. */
-  vDeleted: Uint8Array;
-  eDeleted: Uint8Array;
-  fDeleted: Uint8Array;
+  vDeleted!: Uint8Array;
+  eDeleted!: Uint8Array;
+  fDeleted!: Uint8Array;
 
   /** Vertex, edge and face slots in use, deleted ones included. Halfedge slots are `2 × edgeSlots`. */
   vertexSlots = 0;
@@ -83,15 +84,8 @@ export class HalfedgeMesh {
 
   constructor(capacity: MeshCapacity = { vertices: 0, edges: 0, faces: 0 }) {
     const { vertices, edges, faces } = capacity;
-    this.heNext = new Int32Array(2 * edges);
-    this.hePrev = new Int32Array(2 * edges);
-    this.heVertex = new Int32Array(2 * edges);
-    this.heFace = new Int32Array(2 * edges);
-    this.vHalfedge = new Int32Array(vertices);
-    this.fHalfedge = new Int32Array(faces);
-    this.vDeleted = new Uint8Array(vertices);
-    this.eDeleted = new Uint8Array(edges);
-    this.fDeleted = new Uint8Array(faces);
+    const length: Record<ElementKind, number> = { vertex: vertices, halfedge: 2 * edges, edge: edges, face: faces };
+    for (const spec of meshArrays) setMeshArray(this, spec.name, new spec.type(length[spec.owner]));
     this.vertexAttributes = new AttributeSet(vertices);
     this.halfedgeAttributes = new AttributeSet(2 * edges);
     this.edgeAttributes = new AttributeSet(edges);
@@ -262,25 +256,20 @@ export class HalfedgeMesh {
   /** Makes room for at least this many slots of each kind, without changing any element. */
   reserve(capacity: Partial<MeshCapacity>): void {
     const { vertices = 0, edges = 0, faces = 0 } = capacity;
-    if (vertices > this.vHalfedge.length) {
-      this.vHalfedge = grow(this.vHalfedge, vertices, this.vertexSlots);
-      this.vDeleted = grow(this.vDeleted, vertices, this.vertexSlots);
-      this.vertexAttributes.resize(vertices, this.vertexSlots);
+    const wanted: Record<ElementKind, number> = { vertex: vertices, halfedge: 2 * edges, edge: edges, face: faces };
+    // decided before any array grows (the capacities are read off the arrays themselves)
+    const room: Record<ElementKind, number> = {
+      vertex: this.vHalfedge.length,
+      halfedge: this.heNext.length,
+      edge: this.eDeleted.length,
+      face: this.fHalfedge.length,
+    };
+    const grows = (kind: ElementKind) => wanted[kind] > room[kind];
+    for (const spec of meshArrays) {
+      if (grows(spec.owner)) setMeshArray(this, spec.name, grow(this[spec.name], wanted[spec.owner], slotCount(this, spec.owner)));
     }
-    if (2 * edges > this.heNext.length) {
-      const used = 2 * this.edgeSlots;
-      this.heNext = grow(this.heNext, 2 * edges, used);
-      this.hePrev = grow(this.hePrev, 2 * edges, used);
-      this.heVertex = grow(this.heVertex, 2 * edges, used);
-      this.heFace = grow(this.heFace, 2 * edges, used);
-      this.eDeleted = grow(this.eDeleted, edges, this.edgeSlots);
-      this.halfedgeAttributes.resize(2 * edges, used);
-      this.edgeAttributes.resize(edges, this.edgeSlots);
-    }
-    if (faces > this.fHalfedge.length) {
-      this.fHalfedge = grow(this.fHalfedge, faces, this.faceSlots);
-      this.fDeleted = grow(this.fDeleted, faces, this.faceSlots);
-      this.faceAttributes.resize(faces, this.faceSlots);
+    for (const kind of elementKinds) {
+      if (grows(kind)) attributeSetOf(this, kind).resize(wanted[kind], slotCount(this, kind));
     }
   }
 
@@ -343,22 +332,15 @@ export class HalfedgeMesh {
 
   /** Gives back the spare capacity growth left behind (arrays sized to the slots in use). */
   trim(): void {
-    const { vertexSlots, edgeSlots, faceSlots } = this;
-    if (this.vHalfedge.length === vertexSlots && this.heNext.length === 2 * edgeSlots && this.fHalfedge.length === faceSlots) return;
-    const exact = <T extends Int32Array | Uint8Array>(array: T, length: number) => (array.length === length ? array : (array.slice(0, length) as T));
-    this.heNext = exact(this.heNext, 2 * edgeSlots);
-    this.hePrev = exact(this.hePrev, 2 * edgeSlots);
-    this.heVertex = exact(this.heVertex, 2 * edgeSlots);
-    this.heFace = exact(this.heFace, 2 * edgeSlots);
-    this.vHalfedge = exact(this.vHalfedge, vertexSlots);
-    this.fHalfedge = exact(this.fHalfedge, faceSlots);
-    this.vDeleted = exact(this.vDeleted, vertexSlots);
-    this.eDeleted = exact(this.eDeleted, edgeSlots);
-    this.fDeleted = exact(this.fDeleted, faceSlots);
-    this.vertexAttributes.resize(vertexSlots, vertexSlots);
-    this.halfedgeAttributes.resize(2 * edgeSlots, 2 * edgeSlots);
-    this.edgeAttributes.resize(edgeSlots, edgeSlots);
-    this.faceAttributes.resize(faceSlots, faceSlots);
+    for (const spec of meshArrays) {
+      const array = this[spec.name];
+      const length = slotCount(this, spec.owner);
+      if (array.length !== length) setMeshArray(this, spec.name, array.slice(0, length));
+    }
+    for (const kind of elementKinds) {
+      const slots = slotCount(this, kind);
+      attributeSetOf(this, kind).resize(slots, slots);
+    }
   }
 
   /** Recounts the deleted slots from the flags (after the arrays were replaced wholesale). */
@@ -378,85 +360,80 @@ export class HalfedgeMesh {
    * arrays to fit. Returns old → new id maps (-1 for the deleted) so callers can follow selections.
    */
   compact(): CompactionMaps {
-    const vertexMap = liveMap(this.vertexSlots, (v) => this.vDeleted[v] === 0);
-    const edgeMap = liveMap(this.edgeSlots, (e) => this.eDeleted[e] === 0);
-    const faceMap = liveMap(this.faceSlots, (f) => this.fDeleted[f] === 0);
-    const nV = this.nVertices;
-    const nE = this.nEdges;
-    const nF = this.nFaces;
-    const halfedgeMap = new Int32Array(2 * this.edgeSlots);
+    const maps: Record<ElementKind, Int32Array> = {
+      vertex: liveMap(this.vertexSlots, (v) => this.vDeleted[v] === 0),
+      edge: liveMap(this.edgeSlots, (e) => this.eDeleted[e] === 0),
+      face: liveMap(this.faceSlots, (f) => this.fDeleted[f] === 0),
+      halfedge: new Int32Array(2 * this.edgeSlots),
+    };
     for (let e = 0; e < this.edgeSlots; e++) {
-      const ne = edgeMap[e];
-      halfedgeMap[2 * e] = ne < 0 ? -1 : 2 * ne;
-      halfedgeMap[2 * e + 1] = ne < 0 ? -1 : 2 * ne + 1;
+      const ne = maps.edge[e];
+      maps.halfedge[2 * e] = ne < 0 ? -1 : 2 * ne;
+      maps.halfedge[2 * e + 1] = ne < 0 ? -1 : 2 * ne + 1;
     }
-    const mapOrNone = (map: Int32Array, id: number) => (id < 0 ? id : map[id]);
-
-    const heNext = new Int32Array(2 * nE);
-    const hePrev = new Int32Array(2 * nE);
-    const heVertex = new Int32Array(2 * nE);
-    const heFace = new Int32Array(2 * nE);
-    for (let h = 0; h < 2 * this.edgeSlots; h++) {
-      const nh = halfedgeMap[h];
-      if (nh < 0) continue;
-      heNext[nh] = halfedgeMap[this.heNext[h]];
-      hePrev[nh] = halfedgeMap[this.hePrev[h]];
-      heVertex[nh] = vertexMap[this.heVertex[h]];
-      heFace[nh] = mapOrNone(faceMap, this.heFace[h]);
+    const live: Record<ElementKind, number> = { vertex: this.nVertices, halfedge: 2 * this.nEdges, edge: this.nEdges, face: this.nFaces };
+    for (const spec of meshArrays) {
+      const old = this[spec.name];
+      const map = maps[spec.owner];
+      // flags are all 0 afterwards: only live elements remain
+      const next = new spec.type(live[spec.owner]);
+      if (spec.refers) {
+        const target = maps[spec.refers];
+        for (let i = 0; i < map.length; i++) {
+          const j = map[i];
+          if (j >= 0) next[j] = old[i] < 0 ? old[i] : target[old[i]];
+        }
+      }
+      setMeshArray(this, spec.name, next);
     }
-    const vHalfedge = new Int32Array(nV);
-    for (let v = 0; v < this.vertexSlots; v++) {
-      const nv = vertexMap[v];
-      if (nv >= 0) vHalfedge[nv] = mapOrNone(halfedgeMap, this.vHalfedge[v]);
-    }
-    const fHalfedge = new Int32Array(nF);
-    for (let f = 0; f < this.faceSlots; f++) {
-      const nf = faceMap[f];
-      if (nf >= 0) fHalfedge[nf] = halfedgeMap[this.fHalfedge[f]];
-    }
-
-    this.vertexAttributes.permute(vertexMap, nV);
-    this.halfedgeAttributes.permute(halfedgeMap, 2 * nE);
-    this.edgeAttributes.permute(edgeMap, nE);
-    this.faceAttributes.permute(faceMap, nF);
-    Object.assign(this, { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge });
-    this.vDeleted = new Uint8Array(nV);
-    this.eDeleted = new Uint8Array(nE);
-    this.fDeleted = new Uint8Array(nF);
-    this.vertexSlots = nV;
-    this.edgeSlots = nE;
-    this.faceSlots = nF;
+    for (const kind of elementKinds) attributeSetOf(this, kind).permute(maps[kind], live[kind]);
+    this.vertexSlots = live.vertex;
+    this.edgeSlots = live.edge;
+    this.faceSlots = live.face;
     this.deletedVertices = this.deletedEdges = this.deletedFaces = 0;
-    return { vertices: vertexMap, edges: edgeMap, faces: faceMap };
+    return { vertices: maps.vertex, edges: maps.edge, faces: maps.face };
   }
 
   /** A deep copy, attributes included, with no spare capacity. */
   clone(): HalfedgeMesh {
     const copy = Object.create(HalfedgeMesh.prototype) as HalfedgeMesh;
-    const nH = 2 * this.edgeSlots;
     Object.assign(copy, {
-      heNext: this.heNext.slice(0, nH),
-      hePrev: this.hePrev.slice(0, nH),
-      heVertex: this.heVertex.slice(0, nH),
-      heFace: this.heFace.slice(0, nH),
-      vHalfedge: this.vHalfedge.slice(0, this.vertexSlots),
-      fHalfedge: this.fHalfedge.slice(0, this.faceSlots),
-      vDeleted: this.vDeleted.slice(0, this.vertexSlots),
-      eDeleted: this.eDeleted.slice(0, this.edgeSlots),
-      fDeleted: this.fDeleted.slice(0, this.faceSlots),
       vertexSlots: this.vertexSlots,
       edgeSlots: this.edgeSlots,
       faceSlots: this.faceSlots,
       deletedVertices: this.deletedVertices,
       deletedEdges: this.deletedEdges,
       deletedFaces: this.deletedFaces,
-      vertexAttributes: this.vertexAttributes.clone(this.vertexSlots, this.vertexSlots),
-      halfedgeAttributes: this.halfedgeAttributes.clone(nH, nH),
-      edgeAttributes: this.edgeAttributes.clone(this.edgeSlots, this.edgeSlots),
-      faceAttributes: this.faceAttributes.clone(this.faceSlots, this.faceSlots),
     });
+    for (const spec of meshArrays) setMeshArray(copy, spec.name, this[spec.name].slice(0, slotCount(this, spec.owner)));
+    const sets = Object.fromEntries(
+      elementKinds.map((kind) => [`${kind}Attributes`, attributeSetOf(this, kind).clone(slotCount(this, kind), slotCount(this, kind))]),
+    );
+    Object.assign(copy, sets);
     return copy;
   }
+
+  /**
+   * The slot and deletion counts as they are, or sets them (a recorded change being applied or
+   * undone: the arrays must already hold that many slots).
+   */
+  get slotState(): SlotState {
+    const { vertexSlots, edgeSlots, faceSlots, deletedVertices, deletedEdges, deletedFaces } = this;
+    return { vertexSlots, edgeSlots, faceSlots, deletedVertices, deletedEdges, deletedFaces };
+  }
+  set slotState(state: SlotState) {
+    Object.assign(this, state);
+  }
+}
+
+/** How many slots of each kind are in use, and how many of them are deleted. */
+export interface SlotState {
+  vertexSlots: number;
+  edgeSlots: number;
+  faceSlots: number;
+  deletedVertices: number;
+  deletedEdges: number;
+  deletedFaces: number;
 }
 
 function nextCapacity(used: number): number {

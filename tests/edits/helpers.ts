@@ -1,21 +1,30 @@
 /** Shared checks for the local edits: the reported changes against the pointer diff, and validity. */
 import { expect } from 'vitest';
 import { buildMesh } from '../../src/core/build.js';
+import { applyChange } from '../../src/core/change.js';
 import { diffPointers } from '../../src/core/diff.js';
 import type { EditResult } from '../../src/core/edits/index.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
 import { soupFromArrays, type PolygonSoup } from '../../src/core/soup.js';
 import { validate } from '../../src/core/validate.js';
+import { meshContents } from '../core/contents.js';
 
 /**
- * Runs `edit` on `mesh`, then checks that the mesh is valid and that the edit reported exactly
- * the pointer changes `diffPointers` finds against a copy taken before. Returns the result.
+ * Runs `edit` on `mesh`, then checks that the mesh is valid, that the edit reported exactly the
+ * pointer changes `diffPointers` finds against a copy taken before, and that its change record
+ * undoes and redoes it: backwards gives the mesh before, every array equal, and forwards the mesh
+ * after. Returns the result.
  */
 export function checkedEdit<R extends EditResult>(mesh: HalfedgeMesh, edit: (mesh: HalfedgeMesh) => R): R {
   const before = mesh.clone();
   const result = edit(mesh);
   expect(validate(mesh)).toEqual([]);
   expect(result.changes).toEqual(diffPointers(before, mesh, Infinity).changes);
+  const after = meshContents(mesh);
+  applyChange(mesh, result.record!, 'backward');
+  expect(meshContents(mesh)).toEqual(meshContents(before));
+  applyChange(mesh, result.record!, 'forward');
+  expect(meshContents(mesh)).toEqual(after);
   return result;
 }
 

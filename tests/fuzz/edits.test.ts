@@ -43,7 +43,7 @@ describe(`the edit-sequence fuzzer (seed ${SEED})`, () => {
           const other = mesh.hePrev[mesh.vHalfedge[v]] ^ 1;
           const apply = () => {
             mesh.vHalfedge[v] = other;
-            return { changes: [], created: {}, removed: {} };
+            return { changes: [], record: null, created: {}, removed: {} };
           };
           return { name: `silent v${v}`, refusal: null, apply };
         }),

@@ -1,14 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { buildMesh, type HalfedgeMesh, serializeMesh, smooth, subdivide, torus, uvSphere, validate } from '../../src/index.js';
 import { History } from '../../src/workers/history.js';
+import { meshContents } from '../core/contents.js';
 import { applyEdit } from '../../src/workers/operations.js';
 import { sphereWithFaces } from '../../bench/cases/build.js';
 
 /** Every array of a mesh, as plain arrays, to compare two meshes exactly. */
-function arrays(mesh: HalfedgeMesh) {
-  const { attributes, ...rest } = serializeMesh(mesh);
-  return { ...Object.fromEntries(Object.entries(rest).map(([k, v]) => [k, Array.from(v)])), attributes: Object.values(attributes).flat().map((a) => [a.name, Array.from(a.data)]) };
-}
+const arrays = meshContents;
 
 const meshBytes = (mesh: HalfedgeMesh) => {
   const s = serializeMesh(mesh);

@@ -159,8 +159,8 @@ export function collapseEdgeAt(w: PointerWriter, e: number, position: ArrayLike<
 
   ends[0] = a;
   ends[1] = b;
-  mesh.vertexAttributes.blend(a, ends, halves);
-  if (position) mesh.setPosition(a, position[0], position[1], position[2]);
+  w.blend('vertex', a, ends, halves);
+  if (position) w.setPosition(a, position[0], position[1], position[2]);
 
   // everything that left b now leaves a
   let x = hePrev[t] ^ 1;
@@ -199,7 +199,7 @@ export function collapseEdgeAt(w: PointerWriter, e: number, position: ArrayLike<
 function replaceParallel(w: PointerWriter, gone: number, kept: number): void {
   const { hePrev, heNext, heVertex, heFace, fHalfedge, vHalfedge } = w.mesh;
   const f = heFace[gone];
-  w.mesh.halfedgeAttributes.copy(kept, gone);
+  w.copy('halfedge', kept, gone);
   w.link(hePrev[gone], kept);
   w.link(kept, heNext[gone]);
   w.setFace(kept, f);

@@ -69,8 +69,8 @@ export function flipEdge(mesh: HalfedgeMesh, e: number, options: EditOptions = {
   const f1 = heFace[t];
 
   // corner values (texture coordinates…) follow their vertex: h now starts at d, t at c
-  mesh.halfedgeAttributes.copy(h, t2);
-  mesh.halfedgeAttributes.copy(t, h2);
+  w.copy('halfedge', h, t2);
+  w.copy('halfedge', t, h2);
   // a and b lose the edge: hand them another outgoing halfedge if theirs was on it
   if (vHalfedge[a] === h) w.setVertexHalfedge(a, t1);
   if (vHalfedge[b] === t) w.setVertexHalfedge(b, h1);

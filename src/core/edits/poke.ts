@@ -45,17 +45,16 @@ export function pokeFace(mesh: HalfedgeMesh, f: number, options: EditOptions = {
   const weights = corners.map(() => 1 / k);
 
   const m = w.addVertex();
-  mesh.vertexAttributes.blend(m, corners, weights);
+  w.blend('vertex', m, corners, weights);
   const spokes = sides.map(() => w.addEdge());
   const faces = sides.map((_, i) => (i === 0 ? f : w.addFace()));
-  for (let i = 1; i < k; i++) mesh.faceAttributes.copy(faces[i], f);
-  const cornerValues = mesh.halfedgeAttributes;
+  for (let i = 1; i < k; i++) w.copy('face', faces[i], f);
   for (let i = 0; i < k; i++) {
     const inward = 2 * spokes[i]; // v_i → m
     const outward = inward + 1; // m → v_i
-    cornerValues.copy(inward, sides[i]);
-    if (i === 0) cornerValues.blend(outward, sides, weights);
-    else cornerValues.copy(outward, 2 * spokes[0] + 1);
+    w.copy('halfedge', inward, sides[i]);
+    if (i === 0) w.blend('halfedge', outward, sides, weights);
+    else w.copy('halfedge', outward, 2 * spokes[0] + 1);
     w.setOrigin(inward, corners[i]);
     w.setOrigin(outward, m);
   }

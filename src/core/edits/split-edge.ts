@@ -122,13 +122,12 @@ export function splitEdgeAt(w: PointerWriter, e: number, t: number): number {
   const afterH = heNext[h];
   const beforeO = hePrev[o];
 
-  mesh.vertexAttributes.blend(m, [a, b], [1 - t, t]);
-  mesh.edgeAttributes.copy(n, e);
+  w.blend('vertex', m, [a, b], [1 - t, t]);
+  w.copy('edge', n, e);
   // corner values: g' takes o's (corner b in f1), g and o the blends at m in f0 and f1
-  const corners = mesh.halfedgeAttributes;
-  corners.copy(gt, o);
-  corners.blend(g, [h, afterH], [1 - t, t]);
-  corners.blend(o, [gt, heNext[o]], [t, 1 - t]);
+  w.copy('halfedge', gt, o);
+  w.blend('halfedge', g, [h, afterH], [1 - t, t]);
+  w.blend('halfedge', o, [gt, heNext[o]], [t, 1 - t]);
 
   w.setOrigin(g, m);
   w.setFace(g, heFace[h]);

@@ -76,9 +76,9 @@ export function splitFaceAt(w: PointerWriter, hu: number, hv: number): number {
   const gt = g + 1; // u → v, closes the new face
   const pu = hePrev[hu];
   const pv = hePrev[hv];
-  mesh.faceAttributes.copy(fNew, f);
-  mesh.halfedgeAttributes.copy(g, hv);
-  mesh.halfedgeAttributes.copy(gt, hu);
+  w.copy('face', fNew, f);
+  w.copy('halfedge', g, hv);
+  w.copy('halfedge', gt, hu);
 
   w.setOrigin(g, heVertex[hv]);
   w.setOrigin(gt, heVertex[hu]);

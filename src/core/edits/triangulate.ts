@@ -274,7 +274,7 @@ export function fillRings(
   const faces = new Int32Array(triangles.length / 3);
   for (let i = 0; i < faces.length; i++) {
     faces[i] = i === 0 && face !== -1 ? face : w.addFace();
-    if (face !== -1 && i > 0) mesh.faceAttributes.copy(faces[i], face);
+    if (face !== -1 && i > 0) w.copy('face', faces[i], face);
   }
   // the halfedge from corner x to corner y: a ring side, or a diagonal made on first use
   const diagonals = new Map<number, number>();
@@ -288,8 +288,8 @@ export function fillRings(
       d = 2 * w.addEdge(); // d runs low → high
       w.setOrigin(d, low);
       w.setOrigin(d + 1, high);
-      mesh.halfedgeAttributes.copy(d, ring[low === corner[x] ? x : y]);
-      mesh.halfedgeAttributes.copy(d + 1, ring[low === corner[x] ? y : x]);
+      w.copy('halfedge', d, ring[low === corner[x] ? x : y]);
+      w.copy('halfedge', d + 1, ring[low === corner[x] ? y : x]);
       diagonals.set(low * nV + high, d);
     }
     return corner[x] === low ? d : d + 1;

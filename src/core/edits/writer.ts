@@ -1,12 +1,13 @@
 /**
- * How the local edits write pointers, and how they report what they wrote.
+ * How the local edits write: every pointer, flag and attribute value an edit changes goes through
+ * a `PointerWriter`, so the edit's change record is written as it happens.
  *
- * Every edit changes the mesh through a `PointerWriter`. When recording, the writer remembers each
- * pointer field's value before its first write; at the end it lists the fields whose value really
- * changed, old → new, in the same form and order as `diffPointers(before, after)` would (so the
- * app can draw "what did this edit rewire?" without keeping a copy of the mesh). Without
- * recording, a write is just the store, which is what bulk callers (decimation, the plane cut)
- * want.
+ * When recording, the writer remembers each field's value before its first write (and each
+ * element's attribute values before their first write); at the end, `result()` gives the change
+ * record (which undoes and redoes the edit, and patches the page's copy of the mesh) and the
+ * pointer fields whose value really changed, old → new, in the same form and order as
+ * `diffPointers(before, after)` would list them. Without recording, a write is just the store,
+ * which is what bulk callers (decimation, the plane cut) want.
  *
  * ```
  *   next(h) is 7
@@ -15,8 +16,10 @@
  *   result()            ──► { halfedge h, next: 7 → 9 }  (nothing at all had it ended as 7)
  * ```
  */
-import type { PointerChange, PointerField } from '../diff.js';
+import { type ChangeRecord, ChangeRecorder, pointerDiffOf } from '../change.js';
+import type { PointerChange } from '../diff.js';
 import type { HalfedgeMesh } from '../mesh.js';
+import { attributeSetOf, type ElementKind, meshArrayIndex } from '../mesh-arrays.js';
 import type { ElementIds } from '../operation.js';
 
 export interface EditOptions {
@@ -33,6 +36,8 @@ export interface EditOptions {
 export interface EditResult {
   /** Every pointer field that changed, old → new, as `diffPointers` lists them; empty when not recording. */
   changes: PointerChange[];
+  /** The whole change (pointers, flags, slots, attribute values), null when not recording. */
+  record: ChangeRecord | null;
   /** Elements the edit added. */
   created: ElementIds;
   /** Elements the edit deleted (marked deleted, not compacted: the other ids stay valid). */
@@ -44,19 +49,11 @@ export interface VertexEditResult extends EditResult {
   vertex: number;
 }
 
-// Field slots: a remembered value is keyed by `8 · id + slot`.
-const NEXT = 0;
-const PREV = 1;
-const ORIGIN = 2;
-const FACE = 3;
-const VERTEX_HALFEDGE = 4;
-const FACE_HALFEDGE = 5;
-const FIELD_NAMES: PointerField[] = ['next', 'prev', 'origin', 'face', 'halfedge', 'halfedge'];
-/** diffPointers lists halfedges first, then vertices, then faces. */
-const SLOT_ORDER = [0, 0, 0, 0, 1, 2];
+const { heNext: NEXT, hePrev: PREV, heVertex: ORIGIN, heFace: FACE, vHalfedge: VERTEX_HALFEDGE, fHalfedge: FACE_HALFEDGE } = meshArrayIndex;
+const { vDeleted: VERTEX_DELETED, eDeleted: EDGE_DELETED, fDeleted: FACE_DELETED } = meshArrayIndex;
 
 export class PointerWriter {
-  private readonly before: Map<number, number> | null;
+  private readonly recorder: ChangeRecorder | null;
   private readonly createdIds: IdLists | null;
   private readonly removedIds: IdLists | null;
 
@@ -64,7 +61,7 @@ export class PointerWriter {
     readonly mesh: HalfedgeMesh,
     options: EditOptions = {},
   ) {
-    this.before = options.record === false ? null : new Map();
+    this.recorder = options.record === false ? null : new ChangeRecorder(mesh);
     const ids = options.ids !== false;
     this.createdIds = ids ? { vertices: [], edges: [], faces: [] } : null;
     this.removedIds = ids ? { vertices: [], edges: [], faces: [] } : null;
@@ -72,38 +69,53 @@ export class PointerWriter {
 
   /** `next(h) = n` and `prev(n) = h`: the two always change together. */
   link(h: number, n: number): void {
-    const { heNext, hePrev } = this.mesh;
-    if (this.before) {
-      this.remember(h, NEXT, heNext[h]);
-      this.remember(n, PREV, hePrev[n]);
-    }
-    heNext[h] = n;
-    hePrev[n] = h;
+    this.recorder?.field(NEXT, h);
+    this.recorder?.field(PREV, n);
+    this.mesh.heNext[h] = n;
+    this.mesh.hePrev[n] = h;
   }
 
   setOrigin(h: number, v: number): void {
-    if (this.before) this.remember(h, ORIGIN, this.mesh.heVertex[h]);
+    this.recorder?.field(ORIGIN, h);
     this.mesh.heVertex[h] = v;
   }
 
   setFace(h: number, f: number): void {
-    if (this.before) this.remember(h, FACE, this.mesh.heFace[h]);
+    this.recorder?.field(FACE, h);
     this.mesh.heFace[h] = f;
   }
 
   setVertexHalfedge(v: number, h: number): void {
-    if (this.before) this.remember(v, VERTEX_HALFEDGE, this.mesh.vHalfedge[v]);
+    this.recorder?.field(VERTEX_HALFEDGE, v);
     this.mesh.vHalfedge[v] = h;
   }
 
   setFaceHalfedge(f: number, h: number): void {
-    if (this.before) this.remember(f, FACE_HALFEDGE, this.mesh.fHalfedge[f]);
+    this.recorder?.field(FACE_HALFEDGE, f);
     this.mesh.fHalfedge[f] = h;
+  }
+
+  setPosition(v: number, x: number, y: number, z: number): void {
+    this.recorder?.element('vertex', v);
+    this.mesh.setPosition(v, x, y, z);
+  }
+
+  /** Element `dst` of a kind takes the blend of `sources` for every attribute (see `AttributeSet.blend`). */
+  blend(kind: ElementKind, dst: number, sources: ArrayLike<number>, weights: ArrayLike<number>): void {
+    this.recorder?.element(kind, dst);
+    attributeSetOf(this.mesh, kind).blend(dst, sources, weights);
+  }
+
+  /** Element `dst` of a kind takes every attribute value of element `src`. */
+  copy(kind: ElementKind, dst: number, src: number): void {
+    this.recorder?.element(kind, dst);
+    attributeSetOf(this.mesh, kind).copy(dst, src);
   }
 
   /** A new isolated vertex (attributes zero until the edit blends them). */
   addVertex(): number {
     const v = this.mesh.addVertex();
+    this.recorder?.element('vertex', v);
     this.createdIds?.vertices.push(v);
     return v;
   }
@@ -111,72 +123,54 @@ export class PointerWriter {
   /** A new edge, halfedges `2e` and `2e + 1`, every pointer -1. */
   addEdge(): number {
     const e = this.mesh.addEdge();
+    this.recorder?.element('edge', e);
+    this.recorder?.element('halfedge', 2 * e);
+    this.recorder?.element('halfedge', 2 * e + 1);
     this.createdIds?.edges.push(e);
     return e;
   }
 
   addFace(): number {
     const f = this.mesh.addFace();
+    this.recorder?.element('face', f);
     this.createdIds?.faces.push(f);
     return f;
   }
 
   deleteVertex(v: number): void {
-    if (this.before) this.remember(v, VERTEX_HALFEDGE, this.mesh.vHalfedge[v]);
+    this.recorder?.field(VERTEX_HALFEDGE, v);
+    this.recorder?.field(VERTEX_DELETED, v);
     this.mesh.deleteVertex(v);
     this.removedIds?.vertices.push(v);
   }
 
   /** Deletes both halfedges of `e` (every pointer of theirs becomes -1). */
   deleteEdge(e: number): void {
-    if (this.before) {
-      const { heNext, hePrev, heVertex, heFace } = this.mesh;
-      for (let h = 2 * e; h < 2 * e + 2; h++) {
-        this.remember(h, NEXT, heNext[h]);
-        this.remember(h, PREV, hePrev[h]);
-        this.remember(h, ORIGIN, heVertex[h]);
-        this.remember(h, FACE, heFace[h]);
-      }
+    const recorder = this.recorder;
+    if (recorder) {
+      for (let h = 2 * e; h < 2 * e + 2; h++) for (const field of [NEXT, PREV, ORIGIN, FACE]) recorder.field(field, h);
+      recorder.field(EDGE_DELETED, e);
     }
     this.mesh.deleteEdge(e);
     this.removedIds?.edges.push(e);
   }
 
   deleteFace(f: number): void {
-    if (this.before) this.remember(f, FACE_HALFEDGE, this.mesh.fHalfedge[f]);
+    this.recorder?.field(FACE_HALFEDGE, f);
+    this.recorder?.field(FACE_DELETED, f);
     this.mesh.deleteFace(f);
     this.removedIds?.faces.push(f);
   }
 
-  /** The changes (old → new, unchanged fields left out), and the elements added and deleted. */
+  /** The change record and the pointer changes (old → new, unchanged fields left out), and the elements added and deleted. */
   result(): EditResult {
-    return { changes: this.changes(), created: toIds(this.createdIds), removed: toIds(this.removedIds) };
-  }
-
-  private remember(id: number, slot: number, value: number): void {
-    const key = 8 * id + slot;
-    if (!this.before!.has(key)) this.before!.set(key, value);
-  }
-
-  private changes(): PointerChange[] {
-    if (!this.before) return [];
-    const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = this.mesh;
-    const current = [heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge];
-    const keys = [...this.before.keys()].sort((p, q) => {
-      const byKind = SLOT_ORDER[p % 8] - SLOT_ORDER[q % 8];
-      return byKind !== 0 ? byKind : p - q;
-    });
-    const changes: PointerChange[] = [];
-    for (const key of keys) {
-      const id = Math.floor(key / 8);
-      const slot = key % 8;
-      const before = this.before.get(key)!;
-      const after = current[slot][id];
-      if (before === after) continue;
-      const element = slot < VERTEX_HALFEDGE ? 'halfedge' : slot === VERTEX_HALFEDGE ? 'vertex' : 'face';
-      changes.push({ element, id, field: FIELD_NAMES[slot], before, after });
-    }
-    return changes;
+    const record = this.recorder?.record() ?? null;
+    return {
+      changes: record ? pointerDiffOf(record, Infinity).changes : [],
+      record,
+      created: toIds(this.createdIds),
+      removed: toIds(this.removedIds),
+    };
   }
 }
 
