@@ -64,10 +64,10 @@ describe('the packed package in a fresh project', () => {
     writeFileSync(
       join(project, 'use.ts'),
       `import { buildMesh, type HalfedgeMesh, tetrahedron, vertexOutgoingHalfedges } from 'halfedge-lab';
-       import type { Snapshot } from 'halfedge-lab/worker';
+       import type { PageSnapshot } from 'halfedge-lab/worker';
        const mesh: HalfedgeMesh = buildMesh(tetrahedron()).mesh;
        const out: number[] = [...vertexOutgoingHalfedges(mesh, 0)];
-       export const faces: Snapshot['stats']['faces'] = out.length;`,
+       export const faces: PageSnapshot['stats']['faces'] = out.length;`,
     );
     writeFileSync(
       join(project, 'tsconfig.json'),

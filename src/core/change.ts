@@ -63,7 +63,7 @@ export function applyChange(mesh: HalfedgeMesh, record: ChangeRecord, direction:
   const forward = direction === 'forward';
   const from = forward ? record.before : record.after;
   const to = forward ? record.after : record.before;
-  mesh.reserve({ vertices: to.vertexSlots, edges: to.edgeSlots, faces: to.faceSlots });
+  mesh.makeRoom({ vertices: to.vertexSlots, edges: to.edgeSlots, faces: to.faceSlots });
   // slots coming into use start as a new element does, before the record's writes land on them
   for (const spec of meshArrays) mesh[spec.name].fill(spec.initial, slotsOf(from, spec.owner), slotsOf(to, spec.owner));
   const { array, index, old, new: now } = record.pointers;
@@ -199,4 +199,15 @@ export function positionsChange(mesh: HalfedgeMesh, oldPositions: Float64Array):
 /** Slots a kind of element has in a state (halfedges: two per edge slot). */
 function slotsOf(state: SlotState, kind: ElementKind): number {
   return kind === 'halfedge' ? 2 * state.edgeSlots : kind === 'vertex' ? state.vertexSlots : kind === 'edge' ? state.edgeSlots : state.faceSlots;
+}
+
+/** The same change the other way round: applying it forwards undoes the original. */
+export function invertChange(record: ChangeRecord): ChangeRecord {
+  const { array, index, old, new: now } = record.pointers;
+  return {
+    before: record.after,
+    after: record.before,
+    pointers: { array, index, old: now, new: old },
+    values: record.values.map((value) => ({ ...value, old: value.new, new: value.old })),
+  };
 }

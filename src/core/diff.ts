@@ -5,6 +5,7 @@
  * reports exactly the changes this comparison finds.
  */
 import type { HalfedgeMesh } from './mesh.js';
+import { type ElementKind, type MeshArrayName, meshArrays, slotCount } from './mesh-arrays.js';
 
 export type PointerField = 'next' | 'prev' | 'origin' | 'face' | 'halfedge';
 
@@ -24,43 +25,50 @@ export interface PointerDiff {
   total: number;
 }
 
+/** The part of a mesh the pointer diff reads: its arrays and slot counts (a mesh, or a `pointerCopy` of one). */
+export type MeshPointers = Pick<HalfedgeMesh, MeshArrayName | 'vertexSlots' | 'edgeSlots' | 'faceSlots'>;
+
+/** A copy of a mesh's own arrays, without its attributes: what a diff needs of the mesh before a change. */
+export function pointerCopy(mesh: HalfedgeMesh): MeshPointers {
+  const copy = { vertexSlots: mesh.vertexSlots, edgeSlots: mesh.edgeSlots, faceSlots: mesh.faceSlots } as MeshPointers;
+  for (const { name, owner } of meshArrays) (copy as Record<MeshArrayName, Int32Array | Uint8Array>)[name] = mesh[name].slice(0, slotCount(mesh, owner));
+  return copy;
+}
+
 /**
  * Compares every pointer of two meshes, element by element (ids are compared as they are: an
  * element that exists on one side only counts as changing from or to -1). Deleted elements
- * count as absent.
+ * count as absent. The comparison is the check of change records, and what shows the work of a
+ * phase that rewires the whole mesh (a subdivision step), where recording each write would cost more.
  */
-export function diffPointers(before: HalfedgeMesh, after: HalfedgeMesh, limit = 10_000): PointerDiff {
+export function diffPointers(before: MeshPointers, after: MeshPointers, limit = 10_000): PointerDiff {
   const changes: PointerChange[] = [];
   let total = 0;
-  const note = (element: PointerChange['element'], id: number, field: PointerField, a: number, b: number) => {
-    if (a === b) return;
-    total++;
-    if (changes.length < limit) changes.push({ element, id, field, before: a, after: b });
+  const slots = (mesh: MeshPointers, kind: ElementKind) =>
+    kind === 'halfedge' ? 2 * mesh.edgeSlots : kind === 'vertex' ? mesh.vertexSlots : kind === 'edge' ? mesh.edgeSlots : mesh.faceSlots;
+  const deleted: Record<string, (mesh: MeshPointers) => Uint8Array> = {
+    halfedge: (mesh) => mesh.eDeleted,
+    vertex: (mesh) => mesh.vDeleted,
+    face: (mesh) => mesh.fDeleted,
   };
-  const halfedgeSlots = Math.max(before.halfedgeSlots, after.halfedgeSlots);
-  const liveHalfedge = (mesh: HalfedgeMesh, h: number) => h < mesh.halfedgeSlots && mesh.eDeleted[h >> 1] === 0;
-  for (let h = 0; h < halfedgeSlots; h++) {
-    const inBefore = liveHalfedge(before, h);
-    const inAfter = liveHalfedge(after, h);
-    if (!inBefore && !inAfter) continue;
-    const read = (mesh: HalfedgeMesh, live: boolean, array: 'heNext' | 'hePrev' | 'heVertex' | 'heFace') =>
-      live ? mesh[array][h] : -1;
-    note('halfedge', h, 'next', read(before, inBefore, 'heNext'), read(after, inAfter, 'heNext'));
-    note('halfedge', h, 'prev', read(before, inBefore, 'hePrev'), read(after, inAfter, 'hePrev'));
-    note('halfedge', h, 'origin', read(before, inBefore, 'heVertex'), read(after, inAfter, 'heVertex'));
-    note('halfedge', h, 'face', read(before, inBefore, 'heFace'), read(after, inAfter, 'heFace'));
-  }
-  const vertexSlots = Math.max(before.vertexSlots, after.vertexSlots);
-  for (let v = 0; v < vertexSlots; v++) {
-    const a = v < before.vertexSlots && !before.vDeleted[v] ? before.vHalfedge[v] : -1;
-    const b = v < after.vertexSlots && !after.vDeleted[v] ? after.vHalfedge[v] : -1;
-    note('vertex', v, 'halfedge', a, b);
-  }
-  const faceSlots = Math.max(before.faceSlots, after.faceSlots);
-  for (let f = 0; f < faceSlots; f++) {
-    const a = f < before.faceSlots && !before.fDeleted[f] ? before.fHalfedge[f] : -1;
-    const b = f < after.faceSlots && !after.fDeleted[f] ? after.fHalfedge[f] : -1;
-    note('face', f, 'halfedge', a, b);
+  const live = (mesh: MeshPointers, kind: ElementKind, id: number) =>
+    id < slots(mesh, kind) && deleted[kind](mesh)[kind === 'halfedge' ? id >> 1 : id] === 0;
+  // halfedges (next, prev, origin, face of each in turn), then vertices, then faces: as an edit reports them
+  for (const kind of ['halfedge', 'vertex', 'face'] as const) {
+    const fields = meshArrays.filter((spec) => spec.owner === kind && spec.field);
+    const count = Math.max(slots(before, kind), slots(after, kind));
+    for (let id = 0; id < count; id++) {
+      const inBefore = live(before, kind, id);
+      const inAfter = live(after, kind, id);
+      if (!inBefore && !inAfter) continue;
+      for (const { name, field } of fields) {
+        const a = inBefore ? before[name][id] : -1;
+        const b = inAfter ? after[name][id] : -1;
+        if (a === b) continue;
+        total++;
+        if (changes.length < limit) changes.push({ element: kind, id, field: field!, before: a, after: b });
+      }
+    }
   }
   return { changes, total };
 }

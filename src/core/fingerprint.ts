@@ -24,7 +24,7 @@ export function meshFingerprint(mesh: HalfedgeMesh): string {
     const slots = slotCount(mesh, kind);
     const attributes = [...attributeSetOf(mesh, kind)].sort((p, q) => (p.name < q.name ? -1 : 1));
     for (const { name, data, itemSize } of attributes) {
-      eat(new TextEncoder().encode(`${kind}:${name}`));
+      eat(Uint8Array.from(`${kind}:${name}`, (c) => c.charCodeAt(0) & 0xff));
       eat(view(data.subarray(0, slots * itemSize)));
     }
   }

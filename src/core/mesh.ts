@@ -275,7 +275,7 @@ export class HalfedgeMesh {
 
   /** Adds a vertex at (x, y, z), isolated; its other attributes are zero. */
   addVertex(x = 0, y = 0, z = 0): number {
-    if (this.vertexSlots === this.vHalfedge.length) this.reserve({ vertices: nextCapacity(this.vertexSlots) });
+    this.makeRoom({ vertices: this.vertexSlots + 1, edges: 0, faces: 0 });
     const v = this.vertexSlots++;
     this.vHalfedge[v] = -1;
     this.vDeleted[v] = 0;
@@ -285,7 +285,7 @@ export class HalfedgeMesh {
 
   /** Adds an edge; its halfedges are `2e` and `2e + 1`, with every relation -1 and zeroed attributes. */
   addEdge(): number {
-    if (this.edgeSlots === this.heNext.length >> 1) this.reserve({ edges: nextCapacity(this.edgeSlots) });
+    this.makeRoom({ vertices: 0, edges: this.edgeSlots + 1, faces: 0 });
     const e = this.edgeSlots++;
     this.eDeleted[e] = 0;
     for (let h = 2 * e; h < 2 * e + 2; h++) {
@@ -299,7 +299,7 @@ export class HalfedgeMesh {
 
   /** Adds a face with no halfedge yet; set `fHalfedge` and the loop's `heFace` next. */
   addFace(): number {
-    if (this.faceSlots === this.fHalfedge.length) this.reserve({ faces: nextCapacity(this.faceSlots) });
+    this.makeRoom({ vertices: 0, edges: 0, faces: this.faceSlots + 1 });
     const f = this.faceSlots++;
     this.fHalfedge[f] = -1;
     this.fDeleted[f] = 0;
@@ -330,17 +330,30 @@ export class HalfedgeMesh {
     this.deletedFaces++;
   }
 
-  /** Gives back the spare capacity growth left behind (arrays sized to the slots in use). */
-  trim(): void {
+  /**
+   * Sizes every array to the slots in use plus `spare` more of each kind: gives back what growth
+   * left behind, or keeps a little room so that the next edits do not copy the whole mesh to grow.
+   */
+  trim(spare = 0): void {
     for (const spec of meshArrays) {
       const array = this[spec.name];
-      const length = slotCount(this, spec.owner);
-      if (array.length !== length) setMeshArray(this, spec.name, array.slice(0, length));
+      const length = slotCount(this, spec.owner) + (spec.owner === 'halfedge' ? 2 * spare : spare);
+      if (array.length !== length) setMeshArray(this, spec.name, grow(array, length, Math.min(length, slotCount(this, spec.owner))));
     }
     for (const kind of elementKinds) {
       const slots = slotCount(this, kind);
-      attributeSetOf(this, kind).resize(slots, slots);
+      attributeSetOf(this, kind).resize(slots + (kind === 'halfedge' ? 2 * spare : spare), slots);
     }
+  }
+
+  /** Makes room for this many slots of each kind, growing by half again when it must grow (so growth is rare). */
+  makeRoom(capacity: MeshCapacity): void {
+    const room = (wanted: number, now: number) => (wanted <= now ? 0 : Math.max(wanted, nextCapacity(now)));
+    this.reserve({
+      vertices: room(capacity.vertices, this.vHalfedge.length),
+      edges: room(capacity.edges, this.eDeleted.length),
+      faces: room(capacity.faces, this.fHalfedge.length),
+    });
   }
 
   /** Recounts the deleted slots from the flags (after the arrays were replaced wholesale). */

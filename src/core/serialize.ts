@@ -20,28 +20,44 @@ export interface SerializedAttribute {
 /** The version of the serialized form; a reader refuses another. */
 export const SERIALIZED_MESH_FORMAT = 1;
 
-export type SerializedMesh = { format: number } & { [name in MeshArrayName]: MeshArrayType<name> } & {
+export type SerializedMesh = {
+  format: number;
+  /** Slots in use; the arrays may hold room for more (the same room for every array of a kind). */
+  slots: { vertices: number; edges: number; faces: number };
+} & { [name in MeshArrayName]: MeshArrayType<name> } & {
   attributes: Record<ElementKind, SerializedAttribute[]>;
 };
 
 type MeshArrayType<name extends MeshArrayName> = name extends 'vDeleted' | 'eDeleted' | 'fDeleted' ? Uint8Array : Int32Array;
 
-export function serializeMesh(mesh: HalfedgeMesh): SerializedMesh {
-  const arrays = Object.fromEntries(meshArrays.map(({ name, owner }) => [name, mesh[name].slice(0, slotCount(mesh, owner))]));
+/**
+ * A copy of the mesh's arrays, sized to its slots plus `spare` more of each kind (room for the
+ * elements the next edits add, so that whoever adopts the copy need not grow it at once).
+ */
+export function serializeMesh(mesh: HalfedgeMesh, spare = 0): SerializedMesh {
+  const room = (kind: ElementKind) => slotCount(mesh, kind) + (kind === 'halfedge' ? 2 * spare : spare);
+  const copy = <T extends AttributeArray | Int32Array | Uint8Array>(array: T, length: number, used: number): T => {
+    const next = new (array.constructor as new (n: number) => T)(length);
+    (next as Int32Array).set(array.subarray(0, used) as Int32Array);
+    return next;
+  };
+  const arrays = Object.fromEntries(meshArrays.map(({ name, owner }) => [name, copy(mesh[name], room(owner), slotCount(mesh, owner))]));
   const attributes = Object.fromEntries(
     elementKinds.map((kind) => {
       const count = slotCount(mesh, kind);
+      const length = room(kind);
       const list = [...attributeSetOf(mesh, kind)].map(({ name, type, itemSize, interpolation, data }) => ({
         name,
         type,
         itemSize,
         interpolation,
-        data: data.slice(0, count * itemSize),
+        data: copy(data, length * itemSize, count * itemSize),
       }));
       return [kind, list];
     }),
   );
-  return { format: SERIALIZED_MESH_FORMAT, ...arrays, attributes } as SerializedMesh;
+  const slots = { vertices: mesh.vertexSlots, edges: mesh.edgeSlots, faces: mesh.faceSlots };
+  return { format: SERIALIZED_MESH_FORMAT, slots, ...arrays, attributes } as SerializedMesh;
 }
 
 /** The buffers of a serialized mesh, for a transfer list. */
@@ -61,19 +77,25 @@ export function deserializeMesh(serialized: SerializedMesh): HalfedgeMesh {
   if (serialized.format !== SERIALIZED_MESH_FORMAT) {
     throw new InvalidInputError(`serialized mesh: format ${String(serialized.format)}, this library reads format ${SERIALIZED_MESH_FORMAT}`);
   }
-  const nH = serialized.heNext.length;
-  const slots: Record<ElementKind, number> = {
+  const room: Record<ElementKind, number> = {
     vertex: serialized.vHalfedge.length,
-    halfedge: nH,
-    edge: nH >> 1,
+    halfedge: serialized.heNext.length,
+    edge: serialized.eDeleted.length,
     face: serialized.fHalfedge.length,
   };
-  if (nH % 2 !== 0) throw new InvalidInputError(`serialized mesh: heNext has ${nH} entries, an even number expected`);
+  const { vertices, edges, faces } = serialized.slots ?? {};
+  const slots: Record<ElementKind, number> = { vertex: vertices, halfedge: 2 * edges, edge: edges, face: faces };
+  for (const kind of elementKinds) {
+    if (!Number.isInteger(slots[kind]) || slots[kind] < 0 || slots[kind] > room[kind]) {
+      throw new InvalidInputError(`serialized mesh: ${slots[kind]} ${kind} slots do not fit arrays of ${room[kind]}`);
+    }
+  }
+  if (room.halfedge !== 2 * room.edge) throw new InvalidInputError(`serialized mesh: heNext has ${room.halfedge} entries, ${2 * room.edge} expected`);
   const mesh = new HalfedgeMesh();
   for (const { name, owner, type } of meshArrays) {
     const array = serialized[name];
-    if (!(array instanceof type) || array.length !== slots[owner]) {
-      throw new InvalidInputError(`serialized mesh: ${name} has ${array?.length} entries, ${slots[owner]} expected`);
+    if (!(array instanceof type) || array.length !== room[owner]) {
+      throw new InvalidInputError(`serialized mesh: ${name} has ${array?.length} entries, ${room[owner]} expected`);
     }
     setMeshArray(mesh, name, array);
   }
@@ -83,7 +105,7 @@ export function deserializeMesh(serialized: SerializedMesh): HalfedgeMesh {
   mesh.recountDeleted();
   for (const kind of elementKinds) {
     const set = attributeSetOf(mesh, kind);
-    const count = slots[kind];
+    const count = room[kind];
     set.resize(count, 0);
     for (const { name, itemSize, interpolation, data } of serialized.attributes[kind]) {
       if (data.length !== count * itemSize) {

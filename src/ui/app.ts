@@ -17,7 +17,8 @@ import {
 } from '../core/index.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
-import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
+import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
+import type { EditRequest, OperationRequest } from '../workers/protocol.js';
 import { byId, el, replace } from './dom.js';
 import { combineHighlights, hoverHighlight, phaseHighlight, problemHighlight, quizHighlight, selectionHighlight } from './highlights.js';
 import { renderExport } from './panels/export.js';
@@ -298,8 +299,8 @@ export class App {
     // the sample menu names the model the mesh on screen came from, wherever the history is
     this.sample = openedEntry(snapshot)?.sample ?? null;
     byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // blank for a file of the user's
-    const mesh = (this.mesh = deserializeMesh(snapshot.mesh));
-    this.surface.update(snapshot.render);
+    const mesh = (this.mesh = snapshot.mesh);
+    this.surface.update(snapshot.render, snapshot.renderPatch);
     // while stepping, a phase may colour the vertices by a value it computed
     const values = snapshot.stepping ? (snapshot.phase?.values?.vertices ?? null) : null;
     renderValuesLegend(byId('values-legend'), this.surface.setVertexValues(values), `${snapshot.phase?.name ?? ''}: colour by value`);
@@ -330,6 +331,15 @@ export class App {
     this.drawSelection();
     this.drawPanels();
     this.markReady();
+    if (snapshot.pending) void this.completeDetails(snapshot);
+  }
+
+  /** After a patched snapshot: the full counts and checks, once the worker has them (if still current). */
+  private async completeDetails(snapshot: Snapshot): Promise<void> {
+    const details = await this.client.details().catch(() => null);
+    if (!details || this.snapshot !== snapshot || details.version !== snapshot.version) return;
+    Object.assign(snapshot, { stats: details.stats, problems: details.problems, unavailable: details.unavailable, pending: false });
+    this.drawPanels();
   }
 
   frameMesh(): void {

@@ -13,7 +13,8 @@
  *   const snapshot = await client.open(new Uint8Array(await file.arrayBuffer()), file.name);
  */
 import { proxy, type Remote, transfer, wrap } from 'comlink';
-import type { SerializedMesh } from '../core/index.js';
+import { meshFingerprint, type SerializedMesh, serializeMesh } from '../core/index.js';
+import { PageCopy, type PageSnapshot } from './page-copy.js';
 import {
   type EditRequest,
   installErrorTransfer,
@@ -22,6 +23,7 @@ import {
   type ProgressEvent,
   type SessionApi,
   type Snapshot,
+  type SnapshotDetails,
   transferables,
 } from './protocol.js';
 
@@ -58,11 +60,12 @@ export class SessionClient {
    * Called after the session worker died: restarted with `snapshot` (null if there was no mesh yet),
    * or, when it died before it ever answered (its script could not load), not restarted at all.
    */
-  onRestart: ((message: string, snapshot: Snapshot | null) => void) | null = null;
+  onRestart: ((message: string, snapshot: PageSnapshot | null) => void) | null = null;
 
   private session: LiveWorker<SessionApi>;
   private loader: LiveWorker<LoaderApi> | null = null;
-  private lastMesh: SerializedMesh | null = null;
+  /** The mesh and buffers of the last snapshot, which patches change in place. */
+  private readonly copy = new PageCopy();
   private readonly createSessionWorker: () => Worker;
   private readonly createLoaderWorker: () => Worker;
 
@@ -78,7 +81,7 @@ export class SessionClient {
    * Parses and builds a file off the session, then makes it the current mesh. `bytes` is
    * transferred (it is empty afterwards). A parse error leaves the session as it was.
    */
-  async open(bytes: Uint8Array, name: string, sample: string | null = null): Promise<Snapshot> {
+  async open(bytes: Uint8Array, name: string, sample: string | null = null): Promise<PageSnapshot> {
     this.stopLoading(new CancelledError(`opening ${name} replaced an earlier load`));
     const loader = (this.loader = live<LoaderApi>(this.createLoaderWorker(), () =>
       new WorkerStoppedError(`the loader stopped while reading ${name} (is the file larger than this browser can hold?)`),
@@ -94,7 +97,7 @@ export class SessionClient {
   }
 
   /** Stops a load in progress, or the operation being stepped or run. */
-  async cancel(): Promise<Snapshot | null> {
+  async cancel(): Promise<PageSnapshot | null> {
     if (this.loader) {
       this.stopLoading(new CancelledError('loading cancelled'));
       return null;
@@ -102,35 +105,44 @@ export class SessionClient {
     return this.call((session) => session.cancel());
   }
 
-  snapshot(): Promise<Snapshot> {
+  snapshot(): Promise<PageSnapshot> {
     return this.call((session) => session.snapshot());
   }
-  start(request: OperationRequest): Promise<Snapshot> {
+  start(request: OperationRequest): Promise<PageSnapshot> {
     return this.call((session) => session.start(request));
   }
-  step(): Promise<Snapshot> {
+  step(): Promise<PageSnapshot> {
     return this.call((session) => session.step());
   }
-  runToEnd(): Promise<Snapshot> {
+  runToEnd(): Promise<PageSnapshot> {
     return this.call((session) => session.runToEnd());
   }
-  edit(request: EditRequest): Promise<Snapshot> {
+  edit(request: EditRequest): Promise<PageSnapshot> {
     return this.call((session) => session.edit(request));
   }
-  undo(): Promise<Snapshot> {
+  undo(): Promise<PageSnapshot> {
     return this.call((session) => session.undo());
   }
-  redo(): Promise<Snapshot> {
+  redo(): Promise<PageSnapshot> {
     return this.call((session) => session.redo());
   }
-  jump(index: number): Promise<Snapshot> {
+  jump(index: number): Promise<PageSnapshot> {
     return this.call((session) => session.jump(index));
+  }
+  /** The full counts and checks of the last snapshot (after a patched one). */
+  details(): Promise<SnapshotDetails> {
+    return Promise.race([this.session.remote.details(), this.session.stopped]);
+  }
+  /** The session's fingerprint of its mesh, and this page's of its copy: equal when the copy is right. */
+  async fingerprints(): Promise<{ session: string; page: string | null }> {
+    const session = await Promise.race([this.session.remote.fingerprint(), this.session.stopped]);
+    return { session, page: this.copy.mesh ? meshFingerprint(this.copy.mesh) : null };
   }
   exportMesh(format: string): Promise<Uint8Array> {
     return Promise.race([this.session.remote.exportMesh(format), this.session.stopped]);
   }
   /** Puts back a mesh (e.g. the page's own copy) as a new history entry. */
-  restore(mesh: SerializedMesh, label: string): Promise<Snapshot> {
+  restore(mesh: SerializedMesh, label: string): Promise<PageSnapshot> {
     return this.call((session) => session.restore(mesh, label));
   }
 
@@ -144,11 +156,12 @@ export class SessionClient {
     this.session.worker.terminate();
   }
 
-  private async call(method: (session: Remote<SessionApi>) => Promise<Snapshot>): Promise<Snapshot> {
+  private async call(method: (session: Remote<SessionApi>) => Promise<Snapshot>): Promise<PageSnapshot> {
     const { remote, stopped } = this.session;
-    const snapshot = await Promise.race([method(remote), stopped]);
-    this.lastMesh = snapshot.mesh;
-    return snapshot;
+    let snapshot = await Promise.race([method(remote), stopped]);
+    // a patch of a mesh this page does not hold (a snapshot went astray): ask for the whole one
+    if (!this.copy.accepts(snapshot)) snapshot = await Promise.race([remote.snapshot(), stopped]);
+    return this.copy.take(snapshot);
   }
 
   private startSession(): LiveWorker<SessionApi> {
@@ -170,8 +183,8 @@ export class SessionClient {
   /** A fresh session worker, given the last mesh the page saw. */
   private async recover(reason: string): Promise<void> {
     this.session = this.startSession();
-    const mesh = this.lastMesh;
     // sent as a copy: the page keeps drawing from its own arrays
+    const mesh = this.copy.mesh ? serializeMesh(this.copy.mesh) : null;
     const snapshot = mesh ? await this.call((session) => session.restore(mesh, 'restored after a restart')) : null;
     this.onRestart?.(`${reason}; restarted${snapshot ? ' with the last good mesh' : ''}`, snapshot);
   }

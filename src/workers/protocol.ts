@@ -12,6 +12,7 @@
 import { transferHandlers } from 'comlink';
 import {
   type BuildReport,
+  type ChangeRecord,
   errorFromJSON,
   type ErrorRecord,
   errorToJSON,
@@ -51,18 +52,24 @@ export interface LoadedFile {
  */
 export const PICK_IN_WORKER_ABOVE = 150_000;
 
-/** What the page draws, ready to upload: so the page's thread only hands buffers to the GPU. */
+/**
+ * What the page draws, ready to upload: so the page's thread only hands buffers to the GPU. Every
+ * buffer is indexed by slot and has room to grow (see `RenderLayout`); `counts` says how much of
+ * each to draw.
+ */
 export interface RenderBuffers {
   /** x, y, z of every vertex slot, as float32. */
   positions: Float32Array;
-  /** Vertex ids, three per triangle (polygons split). */
+  /** Vertex ids, three per triangle (polygons split; a triangle of no area where a face was). */
   triangles: Uint32Array;
-  /** The face each triangle belongs to, for picking. */
+  /** The face each triangle belongs to, for picking (-1 for a triangle of no area). */
   triangleFace: Int32Array;
-  /** Vertex ids, two per live edge. */
+  /** Vertex ids, two per edge slot (a deleted edge: one vertex twice). */
   edges: Uint32Array;
-  /** The live vertices (to draw as dots). */
+  /** One vertex id per vertex slot, to draw as dots (a deleted one: a live vertex again). */
   vertices: Uint32Array;
+  /** Entries in use: vertex slots, edge slots, triangles. */
+  counts: { vertices: number; edges: number; triangles: number };
   /** The normal of the plane every face lies in, for a 2D mesh; null for a 3D one. */
   planeNormal: [number, number, number] | null;
   /**
@@ -71,6 +78,30 @@ export interface RenderBuffers {
    * triangles, where the page picks by itself.
    */
   picking: { positions: Float32Array; triangles: Uint32Array } | null;
+}
+
+/** New values for one range of one render buffer. */
+export interface RenderWrite {
+  buffer: 'positions' | 'triangles' | 'triangleFace' | 'edges' | 'vertices';
+  /** The first entry written (a number, not an element: three per vertex position). */
+  offset: number;
+  data: Float32Array | Uint32Array | Int32Array;
+}
+
+/** What to rewrite in the page's render buffers after a change. */
+export interface RenderPatch {
+  writes: RenderWrite[];
+  counts: RenderBuffers['counts'];
+}
+
+/**
+ * How the page's copy of the mesh becomes this snapshot's: `change` applied forwards to the mesh of
+ * snapshot `from` (the one the page holds), and `render` to its buffers.
+ */
+export interface MeshPatch {
+  from: number;
+  change: ChangeRecord;
+  render: RenderPatch;
 }
 
 export interface HistoryItem {
@@ -103,20 +134,35 @@ export interface SteppingState {
 export interface Snapshot {
   /** Increases with every snapshot the session sends. */
   version: number;
-  mesh: SerializedMesh;
-  render: RenderBuffers;
-  stats: MeshStats;
-  /** What `validate()` found (empty: every invariant holds). */
-  problems: Violation[];
+  /** The whole mesh, or null when `patch` changes the page's copy into this snapshot's. */
+  mesh: SerializedMesh | null;
+  /** The buffers to draw, or null when `patch` changes the page's. */
+  render: RenderBuffers | null;
+  patch: MeshPatch | null;
+  /**
+   * Counts, checks and the operations that apply. `pending` after a change small enough to patch:
+   * then the counts (V, E, F, χ) are exact and the rest is as the last full check found it, until
+   * `details()` brings the full check of this snapshot.
+   */
+  details: SnapshotDetails & { pending: boolean };
   /** The build report of the file this mesh came from (until the first edit). */
   report: BuildReport | null;
   file: FileInfo | null;
   /** The phase that produced this mesh, when stepping. */
   phase: Phase | null;
-  /** Pointers changed by the last phase or edit (absent on very large meshes). */
+  /** Pointers changed by the last phase or edit. */
   diff: PointerDiff | null;
   stepping: SteppingState | null;
   history: { items: HistoryItem[]; index: number };
+}
+
+/** What takes a pass over the whole mesh to know: sent with a whole mesh, or after a patch on request. */
+export interface SnapshotDetails {
+  /** The snapshot these are of. */
+  version: number;
+  stats: MeshStats;
+  /** What `validate()` found (empty: every invariant holds). */
+  problems: Violation[];
   /**
    * Why an operation that checks every face does not apply to this mesh (null: it does): each
    * subdivision scheme, cotangent smoothing and decimation (they need triangles).
@@ -140,6 +186,8 @@ export interface SessionApi {
   /** Puts back a mesh the page kept (after the worker had to be restarted). */
   restore(mesh: SerializedMesh, label: string): Promise<Snapshot>;
   snapshot(): Promise<Snapshot>;
+  /** The full counts and checks of the current mesh (after a patched snapshot). */
+  details(): Promise<SnapshotDetails>;
   start(request: OperationRequest): Promise<Snapshot>;
   step(): Promise<Snapshot>;
   runToEnd(): Promise<Snapshot>;
@@ -149,6 +197,8 @@ export interface SessionApi {
   redo(): Promise<Snapshot>;
   jump(index: number): Promise<Snapshot>;
   exportMesh(format: string): Promise<Uint8Array>;
+  /** The fingerprint of the mesh of the last snapshot (`meshFingerprint`), to check the page's copy. */
+  fingerprint(): Promise<string>;
   setProgressListener(listener: ProgressListener | null): Promise<void>;
 }
 
@@ -157,14 +207,19 @@ export interface LoaderApi {
   load(bytes: Uint8Array, name: string, onProgress: ProgressListener): Promise<LoadedFile>;
 }
 
-/** Every buffer of a snapshot or loaded file, for the transfer list. */
+/**
+ * The buffers of a snapshot or loaded file to transfer rather than copy: the whole mesh and render
+ * buffers, made for the page alone. A patch's record is copied (the history keeps its own).
+ */
 export function transferables(value: Snapshot | LoadedFile): ArrayBuffer[] {
-  const buffers = meshBuffers(value.mesh);
-  if ('render' in value) {
-    const { positions, triangles, triangleFace, edges, vertices, picking } = value.render;
+  const buffers = value.mesh ? meshBuffers(value.mesh) : [];
+  const render = 'render' in value ? value.render : null;
+  if (render) {
+    const { positions, triangles, triangleFace, edges, vertices, picking } = render;
     const arrays = [positions, triangles, triangleFace, edges, vertices, ...(picking ? [picking.positions, picking.triangles] : [])];
     buffers.push(...arrays.map((a) => a.buffer as ArrayBuffer));
   }
+  if ('patch' in value && value.patch) buffers.push(...value.patch.render.writes.map((w) => w.data.buffer as ArrayBuffer));
   return buffers;
 }
 

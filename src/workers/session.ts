@@ -1,27 +1,41 @@
 /**
- * One editing session: the current mesh, the history of meshes before it, and the operation being
- * stepped. Pure logic with no worker API in sight, so it is tested directly; `session.worker.ts`
- * exposes it to the page.
+ * One editing session: the current mesh, its history, and the operation being stepped. Pure logic
+ * with no worker API in sight, so it is tested directly; `session.worker.ts` exposes it to the page.
  *
- * Every change works on a copy: the meshes in the history are never edited, so undo is a move in
- * the history, cancel drops the copy, and a failing operation leaves the session as it was.
+ * Local edits change the current mesh in place and keep their change record as the history entry
+ * (undo and redo apply it backwards or forwards); operations that change everything (subdivision,
+ * the cut, decimation) work on a copy, which joins the history whole; smoothing, which only moves
+ * vertices, works in place and is undone by putting the positions back.
+ *
+ * What the page holds: every snapshot has a version, and when the page holds the mesh just before
+ * a change that has a record, the next snapshot carries the record and the render writes instead
+ * of the whole mesh (`MeshPatch`), so an edit costs what it changes.
  */
 import {
+  applyChange,
   type BuildReport,
+  type ChangeRecord,
   deserializeMesh,
   diffPointers,
   type HalfedgeMesh,
+  invertChange,
+  meshFingerprint,
   type Operation,
   type Phase,
+  pointerCopy,
+  pointerDiffOf,
   type PointerDiff,
+  positionsChange,
   type SerializedMesh,
+  serializeMesh,
   TopologyError,
 } from '../core/index.js';
 import { writeMesh, type WriteFormat } from '../core/io/index.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
-import { History } from './history.js';
-import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot } from './protocol.js';
-import { makeSnapshot } from './snapshot.js';
+import { EDIT_ROOM, History } from './history.js';
+import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails } from './protocol.js';
+import { RenderLayout } from './render.js';
+import { fullDetails, patchedDetails } from './snapshot.js';
 
 /** What the session remembers with each mesh of the history, to show it again. */
 interface EntryInfo {
@@ -38,22 +52,31 @@ interface Stepping {
   request: OperationRequest;
   /** Phases the operation announced, when it knows. */
   total: number | null;
-  /** The copy being changed, phase by phase. */
+  /** The mesh being changed, phase by phase: a copy, or the current mesh itself (`startPositions` set). */
   working: HalfedgeMesh;
+  /** For an operation that only moves vertices, run in place: the positions to put back on cancel. */
+  startPositions: Float64Array | null;
   operation: Operation;
   phases: number;
   phase: Phase | null;
   diff: PointerDiff | null;
 }
 
-/** Above this many halfedges, phases skip the pointer diff (it needs a copy of the whole mesh). */
-const DIFF_HALFEDGE_LIMIT = 600_000;
+/** Pointer changes a phase's diff lists (all are counted). */
+const DIFF_LIMIT = 1000;
 
 export class EditingSession {
   private readonly history = new History<EntryInfo>();
   private stepping: Stepping | null = null;
   private cancelRequested = false;
   private version = 0;
+  /** Counts every change of the mesh on screen; a patch applies to the state it was made from. */
+  private state = 0;
+  /** The version and state of the last snapshot sent: what the page holds. */
+  private sent: { version: number; state: number } | null = null;
+  private readonly layout = new RenderLayout();
+  /** The last full pass of counts and checks. */
+  private lastDetails: SnapshotDetails | null = null;
   private progress: ProgressListener | null = null;
 
   setProgressListener(listener: ProgressListener | null): void {
@@ -68,37 +91,42 @@ export class EditingSession {
     const mesh = deserializeMesh(loaded.mesh);
     this.abandonStepping();
     const source: HistorySource = { kind: 'open', name: loaded.file.name, sample };
-    this.history.push(`open ${loaded.file.name}`, mesh, { source, report: loaded.report, file: loaded.file, phase: null, diff: null });
-    return this.snapshot();
+    this.history.pushMesh(`open ${loaded.file.name}`, mesh, { source, report: loaded.report, file: loaded.file, phase: null, diff: null });
+    this.state++;
+    return this.send(null, -1);
   }
 
   restore(serialized: SerializedMesh, label: string): Snapshot {
     this.abandonStepping();
-    this.history.push(label, deserializeMesh(serialized), { source: { kind: 'restore' }, report: null, file: null, phase: null, diff: null });
-    return this.snapshot();
+    this.history.pushMesh(label, deserializeMesh(serialized), { source: { kind: 'restore' }, report: null, file: null, phase: null, diff: null });
+    this.state++;
+    return this.send(null, -1);
   }
 
-  /** Starts stepping an operation on a copy of the current mesh; nothing changes until `step`. */
+  /** Starts stepping an operation (on a copy, or in place when it only moves vertices); nothing changes until `step`. */
   start(request: OperationRequest): Snapshot {
     const current = this.currentMesh();
-    this.abandonStepping();
-    const working = current.clone();
+    const from = this.state;
+    const undone = this.abandonStepping();
     if (request.kind === 'subdivide' && request.level === undefined) {
       // how many levels of this scheme led to the current mesh (√3 alternates its boundary rule)
       const label = operationLabel(request);
       const levels = this.history.items().slice(0, this.history.position + 1).filter((entry) => entry.label === label).length;
       request = { ...request, level: levels };
     }
+    const inPlace = request.kind === 'smooth';
+    const working = inPlace ? current : current.clone();
     // throws (leaving the session as it was) when the operation does not apply
     const { operation, phases } = startOperation(working, request);
-    this.stepping = { label: operationLabel(request), request, total: phases, working, operation, phases: 0, phase: null, diff: null };
-    return this.snapshot();
+    const startPositions = inPlace ? current.positions.slice(0, 3 * current.vertexSlots) : null;
+    this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null };
+    return this.send(undone, from);
   }
 
   /** Runs the next phase; when the operation has no more, its result joins the history. */
   step(): Snapshot {
-    this.stepOnce();
-    return this.snapshot();
+    const from = this.state;
+    return this.send(this.stepOnce(), from);
   }
 
   /**
@@ -107,6 +135,9 @@ export class EditingSession {
    */
   async runToEnd(): Promise<Snapshot> {
     this.cancelRequested = false;
+    const from = this.state;
+    const mesh = this.stepping?.startPositions ? this.stepping.working : null;
+    const positions = mesh ? mesh.positions.slice(0, 3 * mesh.vertexSlots) : null;
     while (this.stepping) {
       const label = this.stepping.label;
       this.stepOnce();
@@ -115,51 +146,68 @@ export class EditingSession {
       await new Promise((resolve) => setTimeout(resolve, 0));
       if (this.cancelRequested) this.abandonStepping();
     }
-    return this.snapshot();
+    return this.send(mesh && positions ? positionsChange(mesh, positions) : null, from);
   }
 
   /** Drops the operation being stepped (or run): back to the mesh before it. */
   cancel(): Snapshot {
     this.cancelRequested = true;
-    this.abandonStepping();
-    return this.snapshot();
+    const from = this.state;
+    return this.send(this.abandonStepping(), from);
   }
 
+  /** Applies a local edit to the current mesh; its change record becomes the history entry. */
   edit(request: EditRequest): Snapshot {
-    const current = this.currentMesh();
-    this.abandonStepping();
-    const mesh = current.clone();
+    const from = this.state;
+    const undone = this.abandonStepping();
+    const mesh = this.currentMesh();
     const result = applyEdit(mesh, request); // throws, leaving the session as it was
-    this.history.push(result.label, mesh, {
+    const record = result.record!;
+    this.history.pushChange(result.label, record, {
       source: { kind: 'edit', request },
       report: null,
       file: this.history.entry()!.info.file,
       phase: null,
-      diff: { changes: result.changes, total: result.changes.length },
+      diff: pointerDiffOf(record, DIFF_LIMIT),
     });
-    return this.snapshot();
+    this.state++;
+    // the page may hold the operation that was just dropped: then it needs the whole mesh
+    return this.send(undone ? null : record, undone ? -1 : from);
   }
 
   undo(): Snapshot {
-    this.abandonStepping();
-    if (this.history.position > 0) this.history.moveTo(this.history.position - 1);
-    return this.snapshot();
+    return this.jump(Math.max(0, this.history.position - 1));
   }
 
   redo(): Snapshot {
-    this.abandonStepping();
-    if (this.history.position + 1 < this.history.length) this.history.moveTo(this.history.position + 1);
-    return this.snapshot();
+    return this.jump(Math.min(this.history.length - 1, this.history.position + 1));
   }
 
+  /** Makes history entry `index` current; one step over a change record is sent as that record. */
   jump(index: number): Snapshot {
-    this.abandonStepping();
+    const from = this.state;
+    const undone = this.abandonStepping();
+    const position = this.history.position;
     this.history.moveTo(index);
-    return this.snapshot();
+    if (index === position && !undone) return this.send(null, -1);
+    this.state++;
+    const change = undone
+      ? null
+      : index === position + 1
+        ? this.history.changeAt(index)
+        : index === position - 1 && this.history.changeAt(position)
+          ? invertChange(this.history.changeAt(position)!)
+          : null;
+    return this.send(change, from);
   }
 
   exportMesh(format: string): Uint8Array {
     return writeMesh(this.stepping?.working ?? this.currentMesh(), format as WriteFormat);
+  }
+
+  /** The fingerprint of the mesh of the last snapshot: a test that the page's copy equals it. */
+  fingerprint(): string {
+    return meshFingerprint(this.shownMesh());
   }
 
   /** Bytes the history keeps (see `History`): a test of its thrift. */
@@ -167,15 +215,42 @@ export class EditingSession {
     return this.history.bytes();
   }
 
+  /** The current snapshot, with the whole mesh. */
   snapshot(): Snapshot {
+    return this.send(null, -1);
+  }
+
+  /** The full counts and checks of the mesh of the last snapshot sent. */
+  details(): SnapshotDetails {
+    const entry = this.history.entry();
+    const report = this.stepping ? null : (entry?.info.report ?? null);
+    this.lastDetails = fullDetails(this.shownMesh(), report, this.version);
+    return this.lastDetails;
+  }
+
+  /**
+   * The next snapshot: a patch when `change` leads from the state the page holds (`from`) to the
+   * current one and the render buffers have room for it, else the whole mesh.
+   */
+  private send(change: ChangeRecord | null, from: number): Snapshot {
     const entry = this.history.entry();
     const stepping = this.stepping;
-    const mesh = stepping?.working ?? this.history.mesh();
-    if (!mesh || !entry) throw new TopologyError('no mesh is open yet');
-    const { info } = entry;
-    return makeSnapshot(mesh, {
-      version: ++this.version,
-      report: stepping ? null : info.report,
+    const mesh = this.shownMesh();
+    const { info } = entry!;
+    const version = ++this.version;
+    const canPatch = change !== null && this.sent?.state === from && this.lastDetails !== null;
+    const render = canPatch ? this.layout.patch(mesh, change) : null;
+    const patch = render && this.sent ? { from: this.sent.version, change: change!, render } : null;
+    this.sent = { version, state: this.state };
+    const report = stepping ? null : info.report;
+    if (!patch) this.lastDetails = fullDetails(mesh, report, version);
+    return {
+      version,
+      mesh: patch ? null : serializeMesh(mesh, EDIT_ROOM),
+      render: patch ? null : this.layout.full(mesh),
+      patch,
+      details: patch ? patchedDetails(mesh, this.lastDetails!, version) : { ...this.lastDetails!, pending: false },
+      report,
       file: info.file,
       phase: stepping ? stepping.phase : info.phase,
       diff: stepping ? stepping.diff : info.diff,
@@ -184,43 +259,67 @@ export class EditingSession {
         items: this.history.items().map(({ label, vertices, faces, info }) => ({ label, vertices, faces, source: info.source })),
         index: this.history.position,
       },
-    });
+    };
   }
 
-  private stepOnce(): void {
+  /** Runs one phase; returns its change record when it has one (an operation that only moves vertices). */
+  private stepOnce(): ChangeRecord | null {
     const stepping = this.stepping;
     if (!stepping) throw new TopologyError('no operation is being stepped: start one first');
-    const before = stepping.working.halfedgeSlots <= DIFF_HALFEDGE_LIMIT ? stepping.working.clone() : null;
+    const { working } = stepping;
+    const positions = stepping.startPositions ? working.positions.slice(0, 3 * working.vertexSlots) : null;
+    const before = positions ? null : pointerCopy(working);
+    const phaseDiff = () => (before ? diffPointers(before, working, DIFF_LIMIT) : { changes: [], total: 0 });
     let next = stepping.operation.next();
+    this.state++;
     if (!next.done) {
       stepping.phases++;
       stepping.phase = next.value;
-      stepping.diff = before ? diffPointers(before, stepping.working, 2000) : null;
-      if (stepping.total === null || stepping.phases < stepping.total) return;
+      stepping.diff = phaseDiff();
+      if (stepping.total === null || stepping.phases < stepping.total) return positions ? positionsChange(working, positions) : null;
       // that was the last announced phase: let the operation finish now, so no empty step follows
       next = stepping.operation.next();
       if (!next.done) {
         // it had more to do than it announced: show that phase as well, and stop predicting
         stepping.phases++;
         stepping.phase = next.value;
-        stepping.diff = null;
+        stepping.diff = phaseDiff();
         stepping.total = null;
-        return;
+        return positions ? positionsChange(working, positions) : null;
       }
     }
     // the operation is over: its result joins the history
     this.stepping = null;
-    this.history.push(stepping.label, stepping.working, {
+    const info: EntryInfo = {
       source: { kind: 'operation', request: stepping.request },
       report: null,
       file: this.history.entry()!.info.file,
       phase: stepping.phase,
       diff: stepping.diff,
-    });
+    };
+    if (stepping.startPositions) this.history.pushChange(stepping.label, positionsChange(working, stepping.startPositions), info);
+    else this.history.pushMesh(stepping.label, working, info);
+    return positions ? positionsChange(working, positions) : null;
   }
 
-  private abandonStepping(): void {
+  /**
+   * Drops the operation being stepped, if any. One run in place puts the positions back: the
+   * change that makes (for the page), else null.
+   */
+  private abandonStepping(): ChangeRecord | null {
+    const stepping = this.stepping;
+    if (!stepping) return null;
     this.stepping = null;
+    this.state++;
+    if (!stepping.startPositions) return null;
+    const { working } = stepping;
+    const moved = working.positions.slice(0, 3 * working.vertexSlots);
+    working.positions.set(stepping.startPositions);
+    return positionsChange(working, moved);
+  }
+
+  private shownMesh(): HalfedgeMesh {
+    return this.stepping?.working ?? this.currentMesh();
   }
 
   private currentMesh(): HalfedgeMesh {

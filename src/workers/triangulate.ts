@@ -1,39 +1,22 @@
 /**
- * Triangles for drawing: each polygon face split into `degree − 2` triangles that remember their
- * face (so a click on a triangle selects the face). Triangles pass through; convex polygons become
- * fans; non-convex ones are ear-clipped in their own plane, so an L-shaped face draws as an L.
- * The mesh itself is not changed.
+ * Triangles for drawing a face: `degree − 2` of them, as vertex ids. A triangle passes through;
+ * convex polygons become fans; non-convex ones are ear-clipped in their own plane, so an L-shaped
+ * face draws as an L. The mesh itself is not changed.
  */
 import { faceVectorArea, type HalfedgeMesh, planeBasis, triangulatePolygon } from '../core/index.js';
-import type { RenderBuffers } from './protocol.js';
 
-export function triangulateFaces(mesh: HalfedgeMesh): Pick<RenderBuffers, 'triangles' | 'triangleFace'> {
-  const { heNext, heVertex, fHalfedge, fDeleted, positions: p } = mesh;
-  let count = 0;
-  for (let f = 0; f < mesh.faceSlots; f++) if (!fDeleted[f]) count += mesh.faceDegree(f) - 2;
-  const triangles = new Uint32Array(3 * count);
-  const triangleFace = new Int32Array(count);
+export function faceTriangles(mesh: HalfedgeMesh, f: number): Uint32Array {
+  const { heNext, heVertex, fHalfedge, positions: p } = mesh;
   const loop: number[] = [];
+  const start = fHalfedge[f];
+  let h = start;
+  do {
+    loop.push(heVertex[h]);
+    h = heNext[h];
+  } while (h !== start && loop.length <= mesh.halfedgeSlots);
   const normal = [0, 0, 0];
-  let t = 0;
-  for (let f = 0; f < mesh.faceSlots; f++) {
-    if (fDeleted[f]) continue;
-    loop.length = 0;
-    const start = fHalfedge[f];
-    let h = start;
-    do {
-      loop.push(heVertex[h]);
-      h = heNext[h];
-    } while (h !== start);
-    const corners = loop.length === 3 || isConvex(p, loop, faceVectorArea(mesh, f, normal)) ? fan(loop) : earClip(p, loop, normal);
-    for (let i = 0; i < corners.length; i += 3) {
-      triangles[3 * t] = corners[i];
-      triangles[3 * t + 1] = corners[i + 1];
-      triangles[3 * t + 2] = corners[i + 2];
-      triangleFace[t++] = f;
-    }
-  }
-  return { triangles, triangleFace };
+  const corners = loop.length === 3 || isConvex(p, loop, faceVectorArea(mesh, f, normal)) ? fan(loop) : earClip(p, loop, normal);
+  return Uint32Array.from(corners);
 }
 
 function fan(loop: number[]): number[] {

@@ -1,24 +1,23 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, type HalfedgeMesh, serializeMesh, smooth, subdivide, torus, uvSphere, validate } from '../../src/index.js';
+import { buildMesh, type HalfedgeMesh, positionsChange, smooth, subdivide, torus, uvSphere, validate } from '../../src/index.js';
 import { History } from '../../src/workers/history.js';
-import { meshContents } from '../core/contents.js';
 import { applyEdit } from '../../src/workers/operations.js';
 import { sphereWithFaces } from '../../bench/cases/build.js';
+import { meshContents } from '../core/contents.js';
 
-/** Every array of a mesh, as plain arrays, to compare two meshes exactly. */
-const arrays = meshContents;
-
+/** Bytes of a mesh's own arrays and attributes, at their capacity. */
 const meshBytes = (mesh: HalfedgeMesh) => {
-  const s = serializeMesh(mesh);
-  return [s.heNext, s.hePrev, s.heVertex, s.heFace, s.vHalfedge, s.fHalfedge, s.vDeleted, s.eDeleted, s.fDeleted, ...Object.values(s.attributes).flat().map((a) => a.data)].reduce((n, a) => n + a.byteLength, 0);
+  const history = new History<null>();
+  history.pushMesh('measure', mesh.clone(), null);
+  return history.bytes();
 };
 
 describe('History', () => {
-  it('keeps a few bytes for each local edit, and gives every mesh back exactly', () => {
+  it('keeps each local edit as its change record, and gives every mesh back exactly', () => {
     const history = new History<null>();
-    let mesh = buildMesh(uvSphere(40, 60)).mesh;
-    history.push('open', mesh, null);
-    const expected = [arrays(mesh)];
+    const mesh = buildMesh(uvSphere(40, 60)).mesh;
+    history.pushMesh('open', mesh, null);
+    const expected = [meshContents(mesh)];
     const edits = [
       { kind: 'poke-face', face: 10 },
       { kind: 'flip-edge', edge: 500 },
@@ -27,61 +26,72 @@ describe('History', () => {
       { kind: 'poke-face', face: 1234 },
     ] as const;
     for (const edit of edits) {
-      mesh = mesh.clone();
-      applyEdit(mesh, edit);
-      history.push(edit.kind, mesh, null);
-      expected.push(arrays(mesh));
+      // in place, on the history's own current mesh
+      const { record } = applyEdit(history.mesh()!, edit);
+      history.pushChange(edit.kind, record!, null);
+      expected.push(meshContents(history.mesh()!));
     }
-    // one whole mesh, five small differences (and the current mesh, kept whole)
-    expect(history.bytes()).toBeLessThan(2.1 * meshBytes(mesh));
-    for (const index of [0, 3, 1, 5, 2, 4]) {
+    expect(history.mesh()).toBe(mesh);
+    // one whole mesh and five records of a few hundred bytes each
+    expect(history.bytes()).toBeLessThan(meshBytes(mesh) + 5 * 2000);
+    for (const index of [0, 3, 1, 5, 2, 4, 0, 5]) {
       history.moveTo(index);
-      expect(arrays(history.mesh()!), `entry ${index}`).toEqual(expected[index]);
+      expect(meshContents(history.mesh()!), `entry ${index}`).toEqual(expected[index]);
       expect(validate(history.mesh()!)).toEqual([]);
     }
   });
 
-  it('shares the connectivity of a smoothed mesh with the mesh before it', () => {
+  it('keeps a smoothing run as the positions it moved', () => {
     const history = new History<null>();
-    const before = buildMesh(torus(20, 10)).mesh;
-    history.push('open', before, null);
-    const after = before.clone();
-    smooth(after, { method: 'laplacian', iterations: 2 });
-    history.push('smooth', after, null);
-    expect(after.heNext).toBe(before.heNext);
-    expect(after.positions).not.toBe(before.positions);
-    const positions = after.positions.byteLength;
-    // the mesh and the new positions (which the difference shares)
-    expect(history.bytes()).toBe(meshBytes(before) + positions);
+    const mesh = buildMesh(torus(20, 10)).mesh;
+    history.pushMesh('open', mesh, null);
+    const before = meshContents(mesh);
+    const opened = history.bytes();
+    const positions = mesh.positions.slice(0, 3 * mesh.vertexSlots);
+    smooth(mesh, { method: 'laplacian', iterations: 2 });
+    history.pushChange('smooth', positionsChange(mesh, positions), null);
+    const after = meshContents(mesh);
+    // old and new positions, nothing else
+    expect(history.bytes()).toBe(opened + 2 * positions.byteLength);
     history.moveTo(0);
-    expect(arrays(history.mesh()!)).toEqual(arrays(before));
+    expect(meshContents(history.mesh()!)).toEqual(before);
+    history.moveTo(1);
+    expect(meshContents(history.mesh()!)).toEqual(after);
   });
 
-  it('keeps the whole mesh of an operation that changes everything', () => {
+  it('keeps the whole mesh of an operation that changes everything, and the mesh before it where it was', () => {
     const history = new History<null>();
     const before = buildMesh(torus(20, 10)).mesh;
-    history.push('open', before, null);
+    history.pushMesh('open', before, null);
+    const { record } = applyEdit(before, { kind: 'poke-face', face: 3 });
+    history.pushChange('poke', record!, null);
+    const poked = meshContents(before);
     const after = before.clone();
     subdivide(after, 'catmull-clark');
-    history.push('subdivide', after, null);
-    expect(history.bytes()).toBe(meshBytes(before) + meshBytes(after));
-    history.moveTo(0);
-    expect(arrays(history.mesh()!)).toEqual(arrays(before));
-    history.moveTo(1);
+    history.pushMesh('subdivide', after, null);
     expect(history.mesh()).toBe(after);
+    history.moveTo(1);
+    expect(meshContents(history.mesh()!)).toEqual(poked);
+    history.moveTo(0);
+    expect(history.mesh()).toBe(before);
+    expect(validate(before)).toEqual([]);
+    history.moveTo(2);
+    expect(history.mesh()).toBe(after);
+    // an edit after going back drops the entries after it
+    history.moveTo(0);
+    history.pushChange('poke again', applyEdit(before, { kind: 'poke-face', face: 4 }).record!, null);
+    expect(history.length).toBe(2);
   });
 
-  it('holds a million-triangle mesh and five edits in not much more than two meshes', () => {
+  it('holds a million-triangle mesh and a hundred edits in under 5% more than the mesh', () => {
     const history = new History<null>();
-    let mesh = buildMesh(sphereWithFaces(1_000_000)).mesh;
-    const one = meshBytes(mesh);
-    history.push('open', mesh, null);
-    for (let i = 0; i < 5; i++) {
-      mesh = mesh.clone();
-      applyEdit(mesh, { kind: 'poke-face', face: 1000 * i });
-      history.push(`poke ${i}`, mesh, null);
+    const mesh = buildMesh(sphereWithFaces(1_000_000)).mesh;
+    history.pushMesh('open', mesh, null);
+    const one = history.bytes();
+    for (let i = 0; i < 100; i++) {
+      const { record } = applyEdit(mesh, i % 2 ? { kind: 'poke-face', face: 1000 * i } : { kind: 'flip-edge', edge: 7919 * i });
+      history.pushChange(`edit ${i}`, record!, null);
     }
-    // five full copies would be six meshes' worth
-    expect(history.bytes()).toBeLessThan(2.05 * one);
+    expect(history.bytes()).toBeLessThan(1.05 * one);
   });
 });

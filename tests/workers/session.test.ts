@@ -18,20 +18,29 @@ import {
 } from '../../src/index.js';
 import { loadFile } from '../../src/workers/load.js';
 import { PICK_IN_WORKER_ABOVE, transferables } from '../../src/workers/protocol.js';
+import { RenderLayout } from '../../src/workers/render.js';
 import { EditingSession } from '../../src/workers/session.js';
+import { meshContents } from '../core/contents.js';
+import { type PageSession, pageSession } from './page-session.js';
 
-function sessionWith(bytes: Uint8Array, name: string): EditingSession {
+function sessionWith(bytes: Uint8Array, name: string): PageSession & { adopt: EditingSession['adopt']; setProgressListener: EditingSession['setProgressListener']; exportMesh: EditingSession['exportMesh']; historyBytes: () => number } {
   const session = new EditingSession();
   session.adopt(loadFile(bytes, name));
-  return session;
+  const page = pageSession(session);
+  return {
+    ...page,
+    adopt: (...args) => session.adopt(...args),
+    setProgressListener: (listener) => session.setProgressListener(listener),
+    exportMesh: (format) => session.exportMesh(format),
+    historyBytes: () => session.historyBytes(),
+  };
 }
 
 const cubeFile = () => writeSoup(cube(), 'off');
 
 describe('EditingSession', () => {
   it('opens a file into the first history entry and snapshots it', () => {
-    const session = new EditingSession();
-    const snapshot = session.adopt(loadFile(cubeFile(), 'cube.off'));
+    const snapshot = sessionWith(cubeFile(), 'cube.off').snapshot();
     expect(snapshot.stats.faces).toBe(6);
     expect(snapshot.problems).toEqual([]);
     expect(snapshot.file?.name).toBe('cube.off');
@@ -40,7 +49,7 @@ describe('EditingSession', () => {
       index: 0,
     });
     // quads are drawn as two triangles each, remembering their face
-    expect(snapshot.render.triangles.length).toBe(6 * 2 * 3);
+    expect(snapshot.render.counts.triangles).toBe(6 * 2);
     expect(Array.from(snapshot.render.triangleFace.subarray(0, 4))).toEqual([0, 0, 1, 1]);
   });
 
@@ -74,9 +83,7 @@ describe('EditingSession', () => {
     while (session.snapshot().stepping) snapshot = session.step();
     const { mesh } = buildMesh(torus(6, 4));
     subdivide(mesh, 'catmull-clark');
-    const fromSession = serializeMesh(mesh);
-    expect(Array.from(snapshot.mesh.heNext)).toEqual(Array.from(fromSession.heNext));
-    expect(Array.from(snapshot.mesh.attributes.vertex[0]!.data)).toEqual(Array.from(fromSession.attributes.vertex[0]!.data));
+    expect(meshContents(snapshot.mesh)).toEqual(meshContents(mesh));
   });
 
   it('counts √3 levels, so the boundary of an open mesh is split on every second one', () => {
@@ -102,8 +109,10 @@ describe('EditingSession', () => {
     expect(done.stepping).toBeNull();
     expect(done.history.items.at(-1)?.label).toBe('Taubin smoothing, 2 iterations');
     // the entry is a difference (positions only), not a second mesh
-    const positions = done.mesh.attributes.vertex.find((a) => a.name === 'position')!.data.byteLength;
+    const positions = done.mesh.positions.subarray(0, 3 * done.mesh.vertexSlots).byteLength;
     expect(session.historyBytes()).toBeLessThan(opened + 2 * positions + 1000);
+    // each step reached the page as a patch of the positions alone
+    expect(session.patched.slice(-5)).toEqual([true, true, true, true, false]);
   });
 
   it('decimates in batches down to the target, refusing a quad mesh with the reason', () => {
@@ -144,9 +153,11 @@ describe('EditingSession', () => {
   it('applies a local edit with its exact pointer diff, and undoes and redoes it', () => {
     const session = sessionWith(writeSoup(torus(4, 4), 'off'), 't.off');
     const before = session.snapshot();
+    const beforeMesh = before.mesh.clone();
     const edited = session.edit({ kind: 'poke-face', face: 3 });
     expect(edited.stats.faces).toBe(16 - 1 + 4);
-    expect(edited.diff!.changes).toEqual(diffPointers(deserializeMesh(before.mesh), deserializeMesh(edited.mesh)).changes);
+    expect(edited.diff!.changes).toEqual(diffPointers(beforeMesh, edited.mesh).changes);
+    expect(session.patched.at(-1)).toBe(true);
     expect(edited.history.items.map((i) => i.label)).toEqual(['open t.off', 'poke f3']);
     expect(session.undo().stats).toEqual(before.stats);
     expect(session.redo().stats).toEqual(edited.stats);
@@ -211,45 +222,45 @@ describe('loading files for the session', () => {
 
 describe('snapshots cross the worker boundary by transfer', () => {
   it('lists every buffer, and transferring empties the sender’s arrays', () => {
-    const session = sessionWith(cubeFile(), 'cube.off');
+    const session = new EditingSession();
+    session.adopt(loadFile(cubeFile(), 'cube.off'));
     const snapshot = session.snapshot();
     const buffers = transferables(snapshot);
-    expect(buffers).toContain(snapshot.mesh.heNext.buffer);
-    expect(buffers).toContain(snapshot.render.triangles.buffer);
+    expect(buffers).toContain(snapshot.mesh!.heNext.buffer);
+    expect(buffers).toContain(snapshot.render!.triangles.buffer);
     const received = structuredClone(snapshot, { transfer: buffers });
-    expect(snapshot.mesh.heNext.byteLength).toBe(0);
-    expect(snapshot.render.triangles.byteLength).toBe(0);
-    expect(received.mesh.heNext.length).toBe(24);
+    expect(snapshot.mesh!.heNext.byteLength).toBe(0);
+    expect(snapshot.render!.triangles.byteLength).toBe(0);
+    expect(received.mesh!.slots.edges).toBe(12);
     // and the session still has its mesh
-    expect(validate(buildMesh(cube()).mesh)).toEqual([]);
-    expect(session.snapshot().mesh.heNext.length).toBe(24);
+    expect(session.snapshot().mesh!.slots.edges).toBe(12);
   });
 
-  it('copies the drawing arrays for the picking worker only for a mesh past PICK_IN_WORKER_ABOVE triangles', async () => {
-    const { renderBuffers } = await import('../../src/workers/snapshot.js');
-    expect(renderBuffers(buildMesh(cube()).mesh).picking).toBeNull();
+  it('copies the drawing arrays for the picking worker only for a mesh past PICK_IN_WORKER_ABOVE triangles', () => {
+    expect(new RenderLayout().full(buildMesh(cube()).mesh).picking).toBeNull();
     const big = buildMesh(uvSphere(200, 400)).mesh; // 2 · 400 · 199 triangles
     expect(big.nFaces).toBeGreaterThan(PICK_IN_WORKER_ABOVE);
-    const render = renderBuffers(big);
+    const render = new RenderLayout().full(big);
     const picking = render.picking!;
     expect(picking.positions).toEqual(render.positions);
-    expect(picking.triangles).toEqual(render.triangles);
+    expect(picking.triangles).toEqual(render.triangles.subarray(0, 3 * render.counts.triangles));
     // copies, each sent on its own buffer: the page keeps drawing while the picking worker has its own
     expect(picking.positions.buffer).not.toBe(render.positions.buffer);
     expect(picking.triangles.buffer).not.toBe(render.triangles.buffer);
-    const snapshot = sessionWith(cubeFile(), 'cube.off').snapshot();
-    expect(transferables({ ...snapshot, render })).toEqual(
-      expect.arrayContaining([picking.positions.buffer, picking.triangles.buffer]),
-    );
+    const session = new EditingSession();
+    session.adopt(loadFile(cubeFile(), 'cube.off'));
+    const snapshot = session.snapshot();
+    expect(transferables({ ...snapshot, render })).toEqual(expect.arrayContaining([picking.positions.buffer, picking.triangles.buffer]));
   });
 });
 
 describe('triangles for drawing', () => {
-  it('splits a non-convex face into triangles that stay inside it', async () => {
-    const { triangulateFaces } = await import('../../src/workers/triangulate.js');
+  it('splits a non-convex face into triangles that stay inside it', () => {
     // an L-shaped hexagon listed from (2, 1): a fan from there would cover the notch
     const { mesh } = buildMesh(soupFromArrays([0, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 1, 2, 0, 0, 2, 0], [[2, 3, 4, 5, 0, 1]]));
-    const { triangles, triangleFace } = triangulateFaces(mesh);
+    const render = new RenderLayout().full(mesh);
+    const triangles = render.triangles.subarray(0, 3 * render.counts.triangles);
+    const triangleFace = render.triangleFace.subarray(0, render.counts.triangles);
     expect(triangles.length).toBe(3 * 4);
     expect(Array.from(triangleFace)).toEqual([0, 0, 0, 0]);
     let area = 0;

@@ -1,5 +1,5 @@
 /** The history timeline: every mesh so far, the current one marked; click one to go back to it. */
-import type { Snapshot } from '../../workers/protocol.js';
+import type { PageSnapshot as Snapshot } from '../../workers/page-copy.js';
 import { el, replace } from '../dom.js';
 import { setAvailability, whenAvailable } from './operations.js';
 

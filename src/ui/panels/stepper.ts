@@ -4,7 +4,7 @@
  * `twin`-side, `face` and `origin` field that changed, old → new.
  */
 import type { PointerChange } from '../../core/index.js';
-import type { Snapshot } from '../../workers/protocol.js';
+import type { PageSnapshot as Snapshot } from '../../workers/page-copy.js';
 import { phaseColors } from '../colors.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';

@@ -73,6 +73,7 @@ function isDeleted(mesh: HalfedgeMesh, kind: ElementKind, id: number): boolean {
 
 /** The live ids of a table, in order (row i shows element `ids[i]`), or null when none is deleted. */
 function liveIds(mesh: HalfedgeMesh, spec: TableSpec): Int32Array | null {
+  if (mesh.isCompact) return null;
   const count = spec.count(mesh);
   const live: number[] = [];
   for (let id = 0; id < count; id++) if (!isDeleted(mesh, spec.kind, id)) live.push(id);

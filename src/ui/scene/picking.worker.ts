@@ -7,16 +7,39 @@ import { expose } from 'comlink';
 import { BufferAttribute, BufferGeometry, DoubleSide, Ray, Vector3 } from 'three';
 import { MeshBVH } from 'three-mesh-bvh';
 
+export interface PickingWrite {
+  buffer: 'positions' | 'triangles';
+  offset: number;
+  data: Float32Array | Uint32Array | Int32Array;
+}
+
 let bvh: MeshBVH | null = null;
+let held: { positions: Float32Array; triangles: Uint32Array } | null = null;
+
+/** Spare triangles kept for patches that add some. */
+const SPARE_TRIANGLES = 4096;
 
 const api = {
   /** Takes the mesh to pick from (send its arrays transferred). */
   setMesh(positions: Float32Array, triangles: Uint32Array): void {
-    const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new BufferAttribute(positions, 3));
-    geometry.setIndex(new BufferAttribute(triangles, 1));
-    // indirect: the triangles keep their order, which maps them to their faces
-    bvh = new MeshBVH(geometry, { indirect: true });
+    const room = new Uint32Array(triangles.length + 3 * SPARE_TRIANGLES);
+    room.set(triangles);
+    held = { positions, triangles: room };
+    build(triangles.length / 3);
+  },
+  /** Rewrites ranges of the positions and triangles (an edit's patch), then rebuilds the hierarchy. */
+  patch(writes: PickingWrite[], triangles: number): void {
+    if (!held) return;
+    for (const { buffer, offset, data } of writes) {
+      const target = held[buffer];
+      if (offset + data.length > target.length) {
+        const grown = new (target.constructor as new (n: number) => typeof target)(2 * (offset + data.length));
+        grown.set(target);
+        held[buffer] = grown as never;
+      }
+      (held[buffer] as Float32Array).set(data as Float32Array, offset);
+    }
+    build(triangles);
   },
   /** The first triangle the ray meets (from either side) and where; null when it misses. */
   raycast(origin: number[], direction: number[]): { triangle: number; point: number[] } | null {
@@ -25,6 +48,15 @@ const api = {
     return hit?.faceIndex === undefined || hit.faceIndex === null ? null : { triangle: hit.faceIndex, point: hit.point.toArray() };
   },
 };
+
+function build(triangles: number): void {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(held!.positions, 3));
+  geometry.setIndex(new BufferAttribute(held!.triangles, 1));
+  geometry.setDrawRange(0, 3 * triangles);
+  // indirect: the triangles keep their order, which maps them to their faces (the hierarchy covers the draw range)
+  bvh = new MeshBVH(geometry, { indirect: true });
+}
 
 export type PickingApi = typeof api;
 

@@ -22,10 +22,10 @@ import {
   Vector3,
 } from 'three';
 import { type Remote, transfer, wrap } from 'comlink';
-import type { RenderBuffers } from '../../workers/protocol.js';
+import type { RenderBuffers, RenderPatch } from '../../workers/protocol.js';
 import { colors } from '../colors.js';
 import { type ColourScale, colourScale } from './colour-map.js';
-import type { PickingApi } from './picking.worker.js';
+import type { PickingApi, PickingWrite } from './picking.worker.js';
 
 /** Draw vertices as dots up to this many. */
 const MAX_DOTS = 1_000;
@@ -65,26 +65,50 @@ export class SurfaceLayer {
     this.group.add(this.front, this.back, this.edges, this.dots);
   }
 
-  update(render: RenderBuffers): void {
-    const position = new BufferAttribute(render.positions, 3);
-    this.faces.setAttribute('position', position);
-    this.faces.setIndex(new BufferAttribute(render.triangles, 1));
-    this.faces.computeBoundingSphere();
-    this.faces.computeBoundingBox();
-    this.triangleFace = render.triangleFace;
-    const triangles = render.triangles.length / 3;
-    this.workerReady = render.picking ? this.sendToPickingWorker(render.picking) : null;
-
-    // the lines and dots share the positions, so their bounds too (one pass over them, not three)
-    this.lines.setAttribute('position', position);
-    this.lines.setIndex(new BufferAttribute(render.edges, 1));
+  /**
+   * Draws new buffers, or, with a patch, uploads again only the ranges it rewrote (the buffers
+   * themselves were patched in place by the session client).
+   */
+  update(render: RenderBuffers, patch: RenderPatch | null = null): void {
+    const { counts } = render;
+    const triangles = counts.triangles;
+    if (patch && this.faces.getAttribute('position')?.array === render.positions) {
+      const attributes = {
+        positions: this.faces.getAttribute('position') as BufferAttribute,
+        triangles: this.faces.getIndex()!,
+        edges: this.lines.getIndex()!,
+        vertices: this.vertices.getIndex()!,
+      };
+      for (const { buffer, offset, data } of patch.writes) {
+        if (buffer === 'triangleFace') continue; // read here, never uploaded
+        const attribute = attributes[buffer];
+        attribute.addUpdateRange(offset, data.length);
+        attribute.needsUpdate = true;
+      }
+      if (patch.writes.some((write) => write.buffer === 'positions')) this.faces.computeBoundingSphere();
+      if (this.workerReady) this.workerReady = this.patchPickingWorker(patch);
+    } else {
+      const position = new BufferAttribute(render.positions, 3);
+      this.faces.setAttribute('position', position);
+      this.faces.setIndex(new BufferAttribute(render.triangles, 1));
+      this.triangleFace = render.triangleFace;
+      this.workerReady = render.picking ? this.sendToPickingWorker(render.picking) : null;
+      // the lines and dots share the positions
+      this.lines.setAttribute('position', position);
+      this.lines.setIndex(new BufferAttribute(render.edges, 1));
+      this.vertices.setAttribute('position', position);
+      this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
+      this.faces.computeBoundingSphere();
+      this.edgeLength = medianEdgeLength(render.positions, render.edges, counts.edges);
+    }
+    this.faces.setDrawRange(0, 3 * triangles);
+    this.lines.setDrawRange(0, 2 * counts.edges);
+    this.vertices.setDrawRange(0, counts.vertices);
+    // the lines and dots share the bounds of the positions (one pass over them, not three)
     this.lines.boundingSphere = this.faces.boundingSphere!.clone();
-    this.vertices.setAttribute('position', position);
-    this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
     this.vertices.boundingSphere = this.faces.boundingSphere!.clone();
     // a point set (no faces) shows its vertices however many there are
-    this.dots.visible = render.vertices.length <= MAX_DOTS || triangles === 0;
-    this.edgeLength = medianEdgeLength(render.positions, render.edges);
+    this.dots.visible = counts.vertices <= MAX_DOTS || triangles === 0;
   }
 
   /** Shows or hides the edge lines (hidden where they would be denser than pixels). */
@@ -131,6 +155,12 @@ export class SurfaceLayer {
     (this.dots.material as PointsMaterial).size = 4 * scale;
   }
 
+  /** Passes a patch's positions and triangles on to the picking worker, which rebuilds its hierarchy. */
+  private patchPickingWorker(patch: RenderPatch): Promise<void> {
+    const writes = patch.writes.filter((write): write is PickingWrite => write.buffer === 'positions' || write.buffer === 'triangles');
+    return this.pickingWorker!.patch(writes.map(({ buffer, offset, data }) => ({ buffer, offset, data: data.slice() })), patch.counts.triangles);
+  }
+
   /** Hands the session's copies to the picking worker (transferred: the page copies nothing). */
   private sendToPickingWorker({ positions, triangles }: NonNullable<RenderBuffers['picking']>): Promise<void> {
     this.pickingWorker ??= wrap<PickingApi>(new Worker(new URL('./picking.worker.ts', import.meta.url), { type: 'module' }));
@@ -138,9 +168,8 @@ export class SurfaceLayer {
   }
 }
 
-/** The median length of up to a thousand edges spread over the list (0 with none). */
-export function medianEdgeLength(positions: Float32Array, edges: Uint32Array): number {
-  const count = edges.length / 2;
+/** The median length of up to a thousand of the first `count` edges, spread over the list (0 with none). */
+export function medianEdgeLength(positions: Float32Array, edges: Uint32Array, count = edges.length / 2): number {
   const step = Math.max(1, Math.floor(count / 1000));
   const lengths: number[] = [];
   for (let e = 0; e < count; e += step) {

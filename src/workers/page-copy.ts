@@ -1,0 +1,52 @@
+/**
+ * The page's own copy of the session's mesh and render buffers: taken whole from a snapshot that
+ * carries them, or changed in place by a snapshot's patch (the change record applied forwards, the
+ * render writes copied in), so after an edit the page touches only what the edit changed.
+ */
+import { applyChange, deserializeMesh, type HalfedgeMesh } from '../core/index.js';
+import type { RenderBuffers, RenderPatch, Snapshot, SnapshotDetails } from './protocol.js';
+
+/**
+ * A snapshot as the page holds it: the mesh and the render buffers are the page's own, changed in
+ * place when a snapshot comes as a patch (`renderPatch` then lists the ranges to upload again).
+ * `pending`: the counts beyond V, E, F and the checks are the last full pass's until `details()`.
+ */
+export interface PageSnapshot extends Omit<Snapshot, 'mesh' | 'render' | 'patch' | 'details'>, Omit<SnapshotDetails, 'version'> {
+  mesh: HalfedgeMesh;
+  render: RenderBuffers;
+  renderPatch: RenderPatch | null;
+  pending: boolean;
+}
+
+export class PageCopy {
+  private held: { version: number; mesh: HalfedgeMesh; render: RenderBuffers } | null = null;
+
+  /** The mesh held (null before the first snapshot). */
+  get mesh(): HalfedgeMesh | null {
+    return this.held?.mesh ?? null;
+  }
+
+  /** Whether `take` can use this snapshot: a whole one, or a patch of the version held. */
+  accepts(snapshot: Snapshot): boolean {
+    return !snapshot.patch || this.held?.version === snapshot.patch.from;
+  }
+
+  /**
+   * Makes the snapshot's mesh and buffers the page's own: adopted whole, or patched in place.
+   * @throws Error for a patch of another version than the one held (check `accepts` first).
+   */
+  take(snapshot: Snapshot): PageSnapshot {
+    const { mesh, render, patch, details, ...rest } = snapshot;
+    if (patch) {
+      if (!this.held || this.held.version !== patch.from) throw new Error(`a patch of snapshot ${patch.from}, but the page holds ${this.held?.version}`);
+      applyChange(this.held.mesh, patch.change, 'forward');
+      for (const { buffer, offset, data } of patch.render.writes) (this.held.render[buffer] as Float32Array).set(data as Float32Array, offset);
+      this.held.render.counts = patch.render.counts;
+      this.held.version = snapshot.version;
+    } else {
+      this.held = { version: snapshot.version, mesh: deserializeMesh(mesh!), render: render! };
+    }
+    const { version: _, ...full } = details;
+    return { ...rest, ...full, mesh: this.held.mesh, render: this.held.render, renderPatch: patch?.render ?? null };
+  }
+}

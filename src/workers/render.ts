@@ -1,0 +1,241 @@
+/**
+ * What the page draws, laid out so that a change record becomes a patch of a few ranges: every
+ * buffer is indexed by element slot and keeps room to grow, so an edit rewrites the entries of the
+ * elements it touched and the page uploads only those ranges to the GPU.
+ *
+ * ```
+ *   positions  x y z per vertex slot
+ *   vertices   per vertex slot: the vertex, or (deleted) any live one, drawn twice where it is
+ *   edges      per edge slot: its two ends, or (deleted) one end twice, a line of no length
+ *   triangles  per face: a range of `degree − 2` triangles; a deleted face's range holds
+ *              triangles of no area, and a face that needs more triangles than its range
+ *              moves to the end
+ * ```
+ *
+ * The session keeps one `RenderLayout` for what the page holds: `full()` lays the mesh out
+ * afresh, `patch(change)` says what to rewrite, or null when a fresh layout is the better answer.
+ */
+import type { ChangeRecord, HalfedgeMesh } from '../core/index.js';
+import { faceNormal } from '../core/index.js';
+import { meshArrayIndex } from '../core/mesh-arrays.js';
+import { PICK_IN_WORKER_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
+import { faceTriangles } from './triangulate.js';
+
+/** Spare room in every buffer, so that edits rarely need a fresh layout. */
+const SPARE = 1024;
+
+export class RenderLayout {
+  private faceStart = new Int32Array(0);
+  private faceCount = new Int32Array(0);
+  private trianglesUsed = 0;
+  private capacity = { vertices: 0, edges: 0, triangles: 0 };
+  /** Faces with more than three sides: a vertex that moves may change their triangles. */
+  private polygons = 0;
+
+  /** Every buffer laid out afresh, with room to grow. */
+  full(mesh: HalfedgeMesh): RenderBuffers {
+    const vertexRoom = mesh.vertexSlots + SPARE;
+    const edgeRoom = mesh.edgeSlots + SPARE;
+    const positions = new Float32Array(3 * vertexRoom);
+    positions.set(mesh.positions.subarray(0, 3 * mesh.vertexSlots));
+    const vertices = new Uint32Array(vertexRoom);
+    const fallback = liveVertex(mesh);
+    for (let v = 0; v < mesh.vertexSlots; v++) vertices[v] = mesh.vDeleted[v] ? fallback : v;
+    const edges = new Uint32Array(2 * edgeRoom);
+    for (let e = 0; e < mesh.edgeSlots; e++) writeEdge(mesh, e, edges, 2 * e);
+
+    let count = 0;
+    this.polygons = 0;
+    for (let f = 0; f < mesh.faceSlots; f++) {
+      if (mesh.fDeleted[f]) continue;
+      const degree = mesh.faceDegree(f);
+      count += degree - 2;
+      if (degree > 3) this.polygons++;
+    }
+    const triangleRoom = count + 2 * SPARE;
+    const triangles = new Uint32Array(3 * triangleRoom);
+    const triangleFace = new Int32Array(triangleRoom).fill(-1);
+    this.faceStart = new Int32Array(mesh.faceSlots + SPARE);
+    this.faceCount = new Int32Array(mesh.faceSlots + SPARE);
+    this.trianglesUsed = 0;
+    for (let f = 0; f < mesh.faceSlots; f++) {
+      if (mesh.fDeleted[f]) continue;
+      const t = (this.faceStart[f] = this.trianglesUsed);
+      const h = mesh.fHalfedge[f];
+      if (mesh.heNext[mesh.heNext[mesh.heNext[h]]] === h) {
+        // a triangle (most faces): its corners as they are, without a list
+        triangles[3 * t] = mesh.heVertex[h];
+        triangles[3 * t + 1] = mesh.heVertex[mesh.heNext[h]];
+        triangles[3 * t + 2] = mesh.heVertex[mesh.hePrev[h]];
+        triangleFace[t] = f;
+        this.faceCount[f] = 1;
+      } else {
+        const corners = faceTriangles(mesh, f);
+        writeTriangles(corners, f, t, triangles, triangleFace);
+        this.faceCount[f] = corners.length / 3;
+      }
+      this.trianglesUsed += this.faceCount[f];
+    }
+    this.capacity = { vertices: vertexRoom, edges: edgeRoom, triangles: triangleRoom };
+    const used = this.counts(mesh);
+    return {
+      positions,
+      vertices,
+      edges,
+      triangles,
+      triangleFace,
+      counts: used,
+      planeNormal: planeNormal(mesh),
+      picking: used.triangles > PICK_IN_WORKER_ABOVE ? { positions: positions.slice(), triangles: triangles.slice(0, 3 * used.triangles) } : null,
+    };
+  }
+
+  /**
+   * The writes that bring the page's buffers from the mesh before `change` to `mesh` (after it),
+   * or null when they do not fit the room left (lay the mesh out afresh with `full`).
+   */
+  patch(mesh: HalfedgeMesh, change: ChangeRecord): RenderPatch | null {
+    if (mesh.vertexSlots > this.capacity.vertices || mesh.edgeSlots > this.capacity.edges || mesh.faceSlots > this.faceStart.length) return null;
+    const touched = touchedBy(mesh, change);
+    if (this.polygons > 0) {
+      // a moved corner can change how a polygon splits into triangles: those polygons are drawn again
+      if (touched.moved.size > mesh.vertexSlots / 4) return null;
+      for (const v of touched.moved) this.polygonsAround(mesh, v, touched.faces);
+    }
+    const writes: RenderWrite[] = [];
+    const fallback = liveVertex(mesh);
+
+    for (const v of touched.moved) writes.push({ buffer: 'positions', offset: 3 * v, data: Float32Array.from(mesh.positions.subarray(3 * v, 3 * v + 3)) });
+    for (const v of touched.vertices) {
+      writes.push({ buffer: 'positions', offset: 3 * v, data: Float32Array.from(mesh.positions.subarray(3 * v, 3 * v + 3)) });
+      writes.push({ buffer: 'vertices', offset: v, data: Uint32Array.of(mesh.vDeleted[v] ? fallback : v) });
+    }
+    for (const e of touched.edges) {
+      const data = new Uint32Array(2);
+      writeEdge(mesh, e, data, 0);
+      writes.push({ buffer: 'edges', offset: 2 * e, data });
+    }
+    for (const f of touched.faces) {
+      const wasPolygon = this.faceCount[f] > 1;
+      const corners = f < mesh.faceSlots && !mesh.fDeleted[f] ? faceTriangles(mesh, f) : new Uint32Array(0);
+      const count = corners.length / 3;
+      this.polygons += (count > 1 ? 1 : 0) - (wasPolygon ? 1 : 0);
+      let start = this.faceStart[f];
+      if (count > this.faceCount[f]) {
+        // the old range is too small: blank it and move the face to the end
+        if (this.faceCount[f] > 0) writes.push(...blank(start, this.faceCount[f]));
+        if (this.trianglesUsed + count > this.capacity.triangles) return null;
+        start = this.faceStart[f] = this.trianglesUsed;
+        this.trianglesUsed += count;
+        this.faceCount[f] = count;
+      }
+      const data = new Uint32Array(3 * this.faceCount[f]);
+      const faces = new Int32Array(this.faceCount[f]).fill(-1);
+      writeTriangles(corners, f, 0, data, faces);
+      if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
+    }
+    return { writes, counts: this.counts(mesh) };
+  }
+
+  /** Adds the faces of more than three sides around vertex `v` to `faces`. */
+  private polygonsAround(mesh: HalfedgeMesh, v: number, faces: Set<number>): void {
+    const start = mesh.vHalfedge[v];
+    if (start < 0) return;
+    let h = start;
+    let steps = 0;
+    do {
+      const f = mesh.heFace[h];
+      if (f >= 0 && this.faceCount[f] > 1) faces.add(f);
+      h = mesh.hePrev[h] ^ 1;
+    } while (h !== start && ++steps < mesh.halfedgeSlots);
+  }
+
+  private counts(mesh: HalfedgeMesh): RenderBuffers['counts'] {
+    return { vertices: mesh.vertexSlots, edges: mesh.edgeSlots, triangles: this.trianglesUsed };
+  }
+}
+
+/** The vertices, edges and faces whose drawing a change alters, and the vertices it only moved. */
+function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<number>; edges: Set<number>; faces: Set<number>; moved: Set<number> } {
+  const vertices = new Set<number>();
+  const edges = new Set<number>();
+  const faces = new Set<number>();
+  const moved = new Set<number>();
+  const { before, after } = change;
+  for (let v = before.vertexSlots; v < after.vertexSlots; v++) vertices.add(v);
+  for (let e = before.edgeSlots; e < after.edgeSlots; e++) edges.add(e);
+  for (let f = before.faceSlots; f < after.faceSlots; f++) faces.add(f);
+  const { array, index, old, new: now } = change.pointers;
+  for (let i = 0; i < array.length; i++) {
+    const id = index[i];
+    switch (array[i]) {
+      case meshArrayIndex.heVertex:
+        edges.add(id >> 1);
+        if (mesh.heFace[id] >= 0) faces.add(mesh.heFace[id]);
+        break;
+      case meshArrayIndex.heFace:
+        for (const f of [old[i], now[i]]) if (f >= 0) faces.add(f);
+        break;
+      case meshArrayIndex.heNext:
+        if (mesh.heFace[id] >= 0) faces.add(mesh.heFace[id]);
+        break;
+      case meshArrayIndex.eDeleted:
+        edges.add(id);
+        break;
+      case meshArrayIndex.vDeleted:
+        vertices.add(id);
+        break;
+      case meshArrayIndex.fDeleted:
+      case meshArrayIndex.fHalfedge:
+        faces.add(id);
+        break;
+    }
+  }
+  for (const value of change.values) {
+    if (value.kind !== 'vertex' || value.name !== 'position') continue;
+    const count = value.old.length / 3;
+    for (let i = 0; i < count; i++) {
+      const v = value.index ? value.index[i] : value.start + i;
+      if (!vertices.has(v)) moved.add(v);
+    }
+  }
+  return { vertices, edges, faces, moved };
+}
+
+function writeEdge(mesh: HalfedgeMesh, e: number, edges: Uint32Array, at: number): void {
+  const a = Math.max(0, mesh.heVertex[2 * e]);
+  edges[at] = a;
+  edges[at + 1] = mesh.eDeleted[e] ? a : mesh.heVertex[2 * e + 1];
+}
+
+function writeTriangles(corners: Uint32Array, f: number, first: number, triangles: Uint32Array, triangleFace: Int32Array): void {
+  triangles.set(corners, 3 * first);
+  triangleFace.fill(f, first, first + corners.length / 3);
+}
+
+/** Triangles of no area over a range a face left. */
+function blank(start: number, count: number): RenderWrite[] {
+  return [
+    { buffer: 'triangles', offset: 3 * start, data: new Uint32Array(3 * count) },
+    { buffer: 'triangleFace', offset: start, data: new Int32Array(count).fill(-1) },
+  ];
+}
+
+function liveVertex(mesh: HalfedgeMesh): number {
+  for (let v = 0; v < mesh.vertexSlots; v++) if (!mesh.vDeleted[v]) return v;
+  return 0;
+}
+
+/** The normal of the plane every face lies in (a 2D mesh), or null. */
+export function planeNormal(mesh: HalfedgeMesh): [number, number, number] | null {
+  let reference: number[] | null = null;
+  const n = [0, 0, 0];
+  for (let f = 0; f < mesh.faceSlots; f++) {
+    if (mesh.fDeleted[f]) continue;
+    faceNormal(mesh, f, n);
+    if (n[0] === 0 && n[1] === 0 && n[2] === 0) continue;
+    if (!reference) reference = [...n];
+    else if (Math.abs(reference[0] * n[0] + reference[1] * n[1] + reference[2] * n[2]) < 0.9999) return null;
+  }
+  return reference as [number, number, number] | null;
+}

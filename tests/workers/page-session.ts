@@ -1,0 +1,51 @@
+/**
+ * A session as the page sees it, without a worker: every snapshot is taken into one `PageCopy`
+ * (whole or patched, as the app's client does), and a pending snapshot gets its full details at
+ * once (as the app asks for them), so tests read real counts and checks.
+ */
+import type { Snapshot } from '../../src/workers/protocol.js';
+import { PageCopy, type PageSnapshot } from '../../src/workers/page-copy.js';
+import type { EditingSession } from '../../src/workers/session.js';
+
+export interface PageSession {
+  session: EditingSession;
+  page: PageCopy;
+  /** Every snapshot taken so far, whole (false) or patched (true). */
+  patched: boolean[];
+  snapshot(): PageSnapshot;
+  start(...args: Parameters<EditingSession['start']>): PageSnapshot;
+  step(): PageSnapshot;
+  runToEnd(): Promise<PageSnapshot>;
+  cancel(): PageSnapshot;
+  edit(...args: Parameters<EditingSession['edit']>): PageSnapshot;
+  undo(): PageSnapshot;
+  redo(): PageSnapshot;
+  jump(index: number): PageSnapshot;
+}
+
+export function pageSession(session: EditingSession): PageSession {
+  const page = new PageCopy();
+  const patched: boolean[] = [];
+  const take = (snapshot: Snapshot): PageSnapshot => {
+    patched.push(snapshot.patch !== null);
+    const shown = page.take(snapshot);
+    if (!shown.pending) return shown;
+    const { version: _, ...details } = session.details();
+    return { ...shown, ...details, pending: false };
+  };
+  take(session.snapshot());
+  return {
+    session,
+    page,
+    patched,
+    snapshot: () => take(session.snapshot()),
+    start: (request) => take(session.start(request)),
+    step: () => take(session.step()),
+    runToEnd: async () => take(await session.runToEnd()),
+    cancel: () => take(session.cancel()),
+    edit: (request) => take(session.edit(request)),
+    undo: () => take(session.undo()),
+    redo: () => take(session.redo()),
+    jump: (index) => take(session.jump(index)),
+  };
+}

@@ -1,0 +1,91 @@
+/**
+ * The page's copy, patched by snapshots, against the session's own mesh: after every step of a
+ * random mix of edits, undos, redos, jumps and operation phases, the copy has the same fingerprint
+ * (every array equal) and its render buffers draw what a fresh layout of the mesh draws.
+ */
+import { describe, expect, it } from 'vitest';
+import { type HalfedgeMesh, meshFingerprint, seededRandom, torus, uvSphere, writeSoup } from '../../src/index.js';
+import { loadFile } from '../../src/workers/load.js';
+import { cannotEdit, type EditRequest } from '../../src/workers/operations.js';
+import type { PageSnapshot } from '../../src/workers/page-copy.js';
+import type { RenderBuffers } from '../../src/workers/protocol.js';
+import { RenderLayout } from '../../src/workers/render.js';
+import { EditingSession } from '../../src/workers/session.js';
+import { pageSession } from './page-session.js';
+
+/** What the buffers draw: sorted triangles (as sorted corner triples) with their faces, sorted edges, the dots. */
+function drawn(render: RenderBuffers) {
+  const triangles: string[] = [];
+  for (let t = 0; t < render.counts.triangles; t++) {
+    const corners = [render.triangles[3 * t], render.triangles[3 * t + 1], render.triangles[3 * t + 2]];
+    if (render.triangleFace[t] === -1) continue; // a triangle of no area, where a face was
+    triangles.push(`${[...corners].sort((a, b) => a - b).join(' ')} f${render.triangleFace[t]}`);
+  }
+  const edges: string[] = [];
+  for (let e = 0; e < render.counts.edges; e++) {
+    const [a, b] = [render.edges[2 * e], render.edges[2 * e + 1]];
+    if (a !== b) edges.push(`${Math.min(a, b)} ${Math.max(a, b)}`);
+  }
+  const dots = new Set(Array.from(render.vertices.subarray(0, render.counts.vertices)));
+  const positions = Array.from(render.positions.subarray(0, 3 * render.counts.vertices));
+  return { triangles: triangles.sort(), edges: edges.sort(), dots: [...dots].sort((a, b) => a - b), positions };
+}
+
+function randomEdit(mesh: HalfedgeMesh, random: () => number): EditRequest | null {
+  for (let attempt = 0; attempt < 50; attempt++) {
+    const edge = Math.floor(random() * mesh.edgeSlots);
+    const face = Math.floor(random() * mesh.faceSlots);
+    const kinds: EditRequest[] = [
+      { kind: 'flip-edge', edge },
+      { kind: 'split-edge', edge, triangulate: true },
+      { kind: 'collapse-edge', edge },
+      { kind: 'poke-face', face },
+      { kind: 'erase-edge', edge },
+      { kind: 'split-edge', edge },
+    ];
+    const request = kinds[Math.floor(random() * kinds.length)];
+    if (!cannotEdit(mesh, request)) return request;
+  }
+  return null;
+}
+
+describe('the page copy, patched', () => {
+  it.each([
+    ['a sphere of triangles', () => writeSoup(uvSphere(12, 16), 'off')],
+    ['a torus of quads', () => writeSoup(torus(8, 6), 'off')],
+  ])('stays equal to the session’s mesh through random edits, undos, redos and phases (%s)', (_, file) => {
+    const random = seededRandom(20261125);
+    const editsPatched: boolean[] = [];
+    const session = new EditingSession();
+    session.adopt(loadFile(file(), 'model.off'));
+    const page = pageSession(session);
+    const check = (shown: PageSnapshot, step: string) => {
+      expect(meshFingerprint(shown.mesh), step).toBe(session.fingerprint());
+      expect(drawn(shown.render), step).toEqual(drawn(new RenderLayout().full(shown.mesh)));
+    };
+    for (let i = 0; i < 120; i++) {
+      const roll = random();
+      const mesh = page.page.mesh!;
+      const request = randomEdit(mesh, random);
+      if (roll < 0.55 && request) {
+        check(page.edit(request), `${i}: ${JSON.stringify(request)}`);
+        editsPatched.push(page.patched.at(-1)!);
+      }
+      else if (roll < 0.7) check(page.undo(), `${i}: undo`);
+      else if (roll < 0.8) check(page.redo(), `${i}: redo`);
+      else if (roll < 0.85) check(page.jump(Math.floor(random() * page.snapshot().history.items.length)), `${i}: jump`);
+      else if (roll < 0.95) {
+        check(page.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 2 } }), `${i}: smooth`);
+        check(page.step(), `${i}: smoothing step`);
+        check(random() < 0.5 ? page.cancel() : page.step(), `${i}: smoothing cancelled or done`);
+      } else {
+        check(page.start({ kind: 'subdivide', scheme: 'catmull-clark' }), `${i}: subdivide`);
+        check(page.step(), `${i}: first phase`);
+        check(page.cancel(), `${i}: cancelled`);
+      }
+    }
+    // every edit reached the page as a patch: an edit costs what it changes
+    expect(editsPatched.length).toBeGreaterThan(30);
+    expect(editsPatched.every(Boolean)).toBe(true);
+  });
+});
