@@ -5,7 +5,9 @@
  *   - open a 1M-triangle binary PLY: from choosing the file to the first frame that shows it;
  *   - one Loop step on 250k triangles: from the click to the first frame that shows the result;
  *   - for both, the longest main-thread task while the worker works, and overall;
- *   - the size of the app's JavaScript, gzipped.
+ *   - the size of the app's JavaScript, gzipped;
+ *   - on the 1.31M-triangle icosphere: opening it, then flip, split, collapse, undo, redo and one
+ *     smoothing step, each from the call to the drawn result and as a share of the open.
  *
  * Prints one JSON object per line with --json (`case`, `size`, `ms`, plus the case's own fields).
  */
@@ -17,6 +19,7 @@ import { gzipSync } from 'node:zlib';
 import { chromium } from '@playwright/test';
 import { writeSoup } from '../src/index.js';
 import { sphereWithFaces } from './cases/build.js';
+import { icosphere } from './cases/icosphere.js';
 
 const json = process.argv.includes('--json');
 const root = join(import.meta.dirname, '..');
@@ -79,6 +82,31 @@ try {
   await measure(page, 'loop-step-250k-to-drawn', 250_000, async () => {
     await page.evaluate(() => void window.halfedgeLab.runToEnd());
   });
+
+  // local edits on the 1.31M-triangle icosphere, beside the time to open and draw it (the
+  // machine's speed drifts: the ratios are the figures to read)
+  const ico = join(folder, 'icosphere-1310k.ply');
+  writeFileSync(ico, writeSoup(icosphere(8), 'ply-binary'));
+  const open = await measure(page, 'open-icosphere-1310k', 1_310_720, async () => {
+    await page.locator('#file-input').setInputFiles(ico);
+  });
+  await page.waitForTimeout(1500);
+  const versus = (name: string, ms: number, share: number) =>
+    report({ case: `${name}-vs-open`, size: 1_310_720, ms, peer: 'open and draw the same mesh', peerMs: open.ms, ratio: +(ms / open.ms).toFixed(3), limitRatio: share });
+  const edits: Array<[string, () => Promise<unknown>, number]> = [
+    ['flip', () => page.evaluate(() => window.halfedgeLab.edit({ kind: 'flip-edge', edge: 1000 })), 0.05],
+    ['split', () => page.evaluate(() => window.halfedgeLab.edit({ kind: 'split-edge', edge: 2000, triangulate: true })), 0.05],
+    ['collapse', () => page.evaluate(() => window.halfedgeLab.edit({ kind: 'collapse-edge', edge: 3000 })), 0.05],
+    ['undo', () => page.evaluate(() => window.halfedgeLab.undo()), 0.05],
+    ['redo', () => page.evaluate(() => window.halfedgeLab.redo()), 0.05],
+  ];
+  for (const [name, act, share] of edits) {
+    const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, async () => void act());
+    versus(name, timed.ms, share);
+  }
+  await page.evaluate(() => window.halfedgeLab.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 3 } }));
+  const smoothStep = await measure(page, 'smoothing-step-icosphere-1310k', 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()));
+  versus('smoothing-step', smoothStep.ms, 0.15);
 } finally {
   await browser.close();
   server.kill();
@@ -112,14 +140,16 @@ async function measure(page: import('@playwright/test').Page, name: string, size
   const tasks = after.tasks.filter((t) => t.start >= before.t);
   const during = tasks.filter((t) => t.start + t.duration < after.shownAt);
   const longest = (tasks: Array<{ duration: number }>) => Math.round(Math.max(0, ...tasks.map((t) => t.duration)));
-  report({
+  const result = {
     case: name,
     size,
     ms: Math.round(after.drawnAt - before.t),
     longestTaskWhileWorkerWorksMs: longest(during),
     longestTaskOverallMs: longest(tasks),
     limitLongestTaskMs: 100,
-  });
+  };
+  report(result);
+  return result;
 }
 
 async function waitForServer(url: string): Promise<void> {

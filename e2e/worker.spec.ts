@@ -1,6 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { expect, test } from '@playwright/test';
-import { buildMesh, meshStats, readMesh, uvSphere, writeSoup } from '../src/index.js';
+import { buildMesh, meshStats, readMesh, seededRandom, uvSphere, writeSoup } from '../src/index.js';
+import type { EditRequest } from '../src/workers/protocol.js';
 import { openApp } from './helpers.js';
 
 test.describe('the worker session', () => {
@@ -77,5 +78,48 @@ test.describe('the worker session', () => {
     await page.evaluate(() => window.halfedgeLab.start({ kind: 'subdivide', scheme: 'catmull-clark' }));
     await page.evaluate(() => window.halfedgeLab.runToEnd());
     expect(await page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(4 * 128);
+  });
+});
+
+test.describe('edits as patches', () => {
+  test('keeps the page’s copy equal to the worker’s mesh through edits, undos, redos and phases, and picks on the edited mesh', async ({ page }) => {
+    await openApp(page, 'sphere.ply');
+    const random = seededRandom(20261125);
+    const fingerprints = () => page.evaluate(() => window.halfedgeLab.fingerprints());
+    for (let i = 0; i < 40; i++) {
+      const roll = random();
+      const stats = await page.evaluate(() => window.halfedgeLab.state().stats!);
+      const edge = Math.floor(random() * stats.edges);
+      const face = Math.floor(random() * stats.faces);
+      const request = [
+        { kind: 'flip-edge', edge },
+        { kind: 'split-edge', edge, triangulate: true },
+        { kind: 'collapse-edge', edge },
+        { kind: 'poke-face', face },
+      ][Math.floor(random() * 4)]!;
+      if (roll < 0.6) await page.evaluate((r) => window.halfedgeLab.edit(r as EditRequest).catch(() => null), request);
+      else if (roll < 0.75) await page.evaluate(() => window.halfedgeLab.undo());
+      else if (roll < 0.85) await page.evaluate(() => window.halfedgeLab.redo());
+      else {
+        await page.evaluate(() => window.halfedgeLab.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 2 } }));
+        await page.evaluate(() => window.halfedgeLab.step());
+        await page.evaluate(() => window.halfedgeLab.runToEnd());
+      }
+      const { session, page: copy } = await fingerprints();
+      expect(copy, `step ${i}`).toBe(session);
+    }
+    // the last edit's diff, as the automation documents it
+    await page.evaluate(() => window.halfedgeLab.edit({ kind: 'poke-face', face: 0 }));
+    expect(await page.evaluate(() => window.halfedgeLab.state().patched)).toBe(true);
+    const diff = await page.evaluate(() => window.halfedgeLab.state().phase?.diff);
+    expect(diff!.total).toBeGreaterThan(5);
+    expect(diff!.changes[0]).toEqual({ field: expect.stringMatching(/^(heNext|hePrev|heVertex|heFace|vHalfedge|fHalfedge)$/), index: expect.any(Number), old: expect.any(Number), new: expect.any(Number) });
+    // the full check arrives after the patch
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().pending)).toBe(false);
+    expect(await page.evaluate(() => window.halfedgeLab.state().problems)).toEqual([]);
+    // a click still finds a face of the edited mesh
+    const box = (await page.locator('#viewport canvas').boundingBox())!;
+    const picked = await page.evaluate(([x, y]) => window.halfedgeLab.pickAt(x!, y!, 'face'), [box.width / 2, box.height / 2]);
+    expect(picked).toMatch(/^f\d+$/);
   });
 });

@@ -58,6 +58,9 @@ const MIN_EDGE_PIXELS = 3;
 /** …and the arrows while it is at least this many. */
 const MIN_ARROW_EDGE_PIXELS = 5;
 
+/** How long the changes must pause before the full counts and checks are asked for. */
+const DETAILS_AFTER_MS = 400;
+
 export class App {
   readonly client: SessionClient;
   readonly viewer: Viewer;
@@ -334,8 +337,14 @@ export class App {
     if (snapshot.pending) void this.completeDetails(snapshot);
   }
 
-  /** After a patched snapshot: the full counts and checks, once the worker has them (if still current). */
+  /**
+   * After a patched snapshot: the full counts and checks, asked for once the changes pause (the
+   * pass over a large mesh takes the worker a while, and an edit asked for meanwhile would wait
+   * for it), and shown if the snapshot is still current.
+   */
   private async completeDetails(snapshot: Snapshot): Promise<void> {
+    await new Promise((resolve) => setTimeout(resolve, DETAILS_AFTER_MS));
+    if (this.snapshot !== snapshot) return;
     const details = await this.client.details().catch(() => null);
     if (!details || this.snapshot !== snapshot || details.version !== snapshot.version) return;
     Object.assign(snapshot, { stats: details.stats, problems: details.problems, unavailable: details.unavailable, pending: false });

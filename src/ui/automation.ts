@@ -3,7 +3,8 @@
  * docs/automation.md). Everything a student can do by clicking, without pixel-clicking: open a
  * mesh, select, walk, step operations, and read the state the page shows.
  */
-import type { HalfedgeMesh } from '../core/index.js';
+import type { PageSnapshot } from '../workers/page-copy.js';
+import { type HalfedgeMesh, meshArrays } from '../core/index.js';
 import type { EditRequest, OperationRequest } from '../workers/protocol.js';
 import type { App } from './app.js';
 import { recordOf } from './records.js';
@@ -88,6 +89,8 @@ export function automation(app: App) {
       },
       score: () => ({ right: app.quiz.right, asked: app.quiz.asked }),
     },
+    /** The session's fingerprint of its mesh and the page's of its own copy (`meshFingerprint`): equal when every patch landed right. */
+    fingerprints: () => app.client.fingerprints(),
     /** Stops the editing worker as if it had run out of memory (the page should restart it and restore the mesh). */
     simulateWorkerCrash: () => app.client.simulateCrash(),
     /** Everything the page shows, as plain data. */
@@ -100,7 +103,11 @@ export function automation(app: App) {
       problems: app.snapshot?.problems ?? [],
       file: app.snapshot?.file ?? null,
       repairs: app.snapshot?.report?.repairs.map((r) => ({ kind: r.kind, count: r.count })) ?? [],
-      phase: app.snapshot?.phase ? { name: app.snapshot.phase.name, explanation: app.snapshot.phase.explanation } : null,
+      phase: phaseState(app.snapshot),
+      /** True until the full counts and checks of the last change have arrived (`stats` beyond V, E, F, χ; `problems`). */
+      pending: app.snapshot?.pending ?? false,
+      /** Whether the last snapshot came as a patch of the page's copy (an edit, undo, redo or smoothing step) rather than a whole mesh. */
+      patched: (app.snapshot?.renderPatch ?? null) !== null,
       stepping: app.snapshot?.stepping ?? null,
       history: app.snapshot?.history ?? null,
       version: app.snapshot?.version ?? 0,
@@ -110,6 +117,26 @@ export function automation(app: App) {
       drawnAt: app.viewer.lastDrawAt,
     }),
   };
+}
+
+/**
+ * The last phase (or, after a local edit, the edit): its name, explanation and pointer diff, the
+ * diff as `{ total, changes }` with the first 1,000 changes as `{ field, index, old, new }`
+ * (`field` the array written: `heNext`, `hePrev`, `heVertex`, `heFace`, `vHalfedge`, `fHalfedge`).
+ */
+function phaseState(snapshot: PageSnapshot | null) {
+  if (!snapshot || (!snapshot.phase && !snapshot.diff)) return null;
+  const label = snapshot.history.items[snapshot.history.index]?.label ?? '';
+  const diff = snapshot.diff && {
+    total: snapshot.diff.total,
+    changes: snapshot.diff.changes.slice(0, 1000).map(({ element, id, field, before, after }) => ({
+      field: meshArrays.find((spec) => spec.owner === element && spec.field === field)!.name,
+      index: id,
+      old: before,
+      new: after,
+    })),
+  };
+  return { name: snapshot.phase?.name ?? label, explanation: snapshot.phase?.explanation ?? '', diff };
 }
 
 function summary(snapshot: { version: number } | null) {

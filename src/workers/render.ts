@@ -105,11 +105,8 @@ export class RenderLayout {
     const writes: RenderWrite[] = [];
     const fallback = liveVertex(mesh);
 
-    for (const v of touched.moved) writes.push({ buffer: 'positions', offset: 3 * v, data: Float32Array.from(mesh.positions.subarray(3 * v, 3 * v + 3)) });
-    for (const v of touched.vertices) {
-      writes.push({ buffer: 'positions', offset: 3 * v, data: Float32Array.from(mesh.positions.subarray(3 * v, 3 * v + 3)) });
-      writes.push({ buffer: 'vertices', offset: v, data: Uint32Array.of(mesh.vDeleted[v] ? fallback : v) });
-    }
+    writes.push(...positionWrites(mesh, [...touched.moved, ...touched.vertices]));
+    for (const v of touched.vertices) writes.push({ buffer: 'vertices', offset: v, data: Uint32Array.of(mesh.vDeleted[v] ? fallback : v) });
     for (const e of touched.edges) {
       const data = new Uint32Array(2);
       writeEdge(mesh, e, data, 0);
@@ -200,6 +197,19 @@ function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<nu
     }
   }
   return { vertices, edges, faces, moved };
+}
+
+/** Positions of a few vertices one by one; of many (a smoothing step) as one range from the first to the last. */
+function positionWrites(mesh: HalfedgeMesh, vertices: number[]): RenderWrite[] {
+  const at = (v: number) => ({ buffer: 'positions' as const, offset: 3 * v, data: Float32Array.from(mesh.positions.subarray(3 * v, 3 * v + 3)) });
+  if (vertices.length <= 64) return vertices.map(at);
+  let first = Infinity;
+  let last = -1;
+  for (const v of vertices) {
+    first = Math.min(first, v);
+    last = Math.max(last, v);
+  }
+  return [{ buffer: 'positions', offset: 3 * first, data: new Float32Array(mesh.positions.subarray(3 * first, 3 * last + 3)) }];
 }
 
 function writeEdge(mesh: HalfedgeMesh, e: number, edges: Uint32Array, at: number): void {

@@ -139,8 +139,14 @@ export class SurfaceLayer {
    */
   setVertexValues(values: ArrayLike<number> | null): ColourScale | null {
     const materials = [this.front.material, this.back.material] as MeshStandardMaterial[];
-    const scale = values && values.length === this.faces.getAttribute('position').count ? colourScale(values) : null;
-    if (scale) this.faces.setAttribute('color', new BufferAttribute(scale.colours, 3));
+    const slots = this.vertices.drawRange.count;
+    const scale = values && values.length === slots ? colourScale(values) : null;
+    if (scale) {
+      // as long as the positions (which keep room for more vertices)
+      const colours = new Float32Array(this.faces.getAttribute('position').array.length);
+      colours.set(scale.colours);
+      this.faces.setAttribute('color', new BufferAttribute(colours, 3));
+    }
     else this.faces.deleteAttribute('color');
     for (const material of materials) {
       material.vertexColors = scale !== null;
