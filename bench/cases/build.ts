@@ -2,7 +2,7 @@
 import { BufferAttribute, BufferGeometry } from 'three';
 import { HalfedgeDS } from 'three-mesh-halfedge/build/index.esm.js';
 import type { BenchCase } from '../harness.js';
-import { buildMesh, type BuildResult, HalfedgeMesh, type PolygonSoup, torus, uvSphere } from '../../src/index.js';
+import { buildMesh, type BuildResult, meshByteLength, type PolygonSoup, torus, uvSphere } from '../../src/index.js';
 
 /** Slices and stacks of a latitude–longitude sphere with about `faces` triangles. */
 function sphereShape(faces: number): { stacks: number; slices: number } {
@@ -20,12 +20,6 @@ export function sphereWithFaces(faces: number): PolygonSoup {
 export function sphereFaceCount(faces: number): number {
   const { stacks, slices } = sphereShape(faces);
   return 2 * slices * (stacks - 1);
-}
-
-export function meshBytes(mesh: HalfedgeMesh): number {
-  const arrays = [mesh.heNext, mesh.hePrev, mesh.heVertex, mesh.heFace, mesh.vHalfedge, mesh.fHalfedge];
-  const flags = [mesh.vDeleted, mesh.eDeleted, mesh.fDeleted];
-  return [...arrays, ...flags, mesh.positions].reduce((sum, a) => sum + a.byteLength, 0);
 }
 
 export function buildCases(sizes: number[]): BenchCase[] {
@@ -47,7 +41,7 @@ export function buildCases(sizes: number[]): BenchCase[] {
           geometry.setIndex(new BufferAttribute(sphere.faceIndices, 1));
         },
         run: () => buildMesh(sphere),
-        bytes: (result) => meshBytes((result as BuildResult).mesh),
+        bytes: (result) => meshByteLength((result as BuildResult).mesh),
         peer: { name: 'three-mesh-halfedge', run: () => new HalfedgeDS().setFromGeometry(geometry) },
       },
       {
@@ -56,7 +50,7 @@ export function buildCases(sizes: number[]): BenchCase[] {
         repeat: 7,
         prepare: () => void (quads = torus(side, side)),
         run: () => buildMesh(quads),
-        bytes: (result) => meshBytes((result as BuildResult).mesh),
+        bytes: (result) => meshByteLength((result as BuildResult).mesh),
       },
     ];
   });

@@ -17,7 +17,7 @@
 import type { AttributeArray } from './attributes.js';
 import type { PointerChange, PointerDiff } from './diff.js';
 import type { HalfedgeMesh, SlotState } from './mesh.js';
-import { attributeSetOf, type ElementKind, elementKinds, meshArrays } from './mesh-arrays.js';
+import { attributeSetOf, type ElementKind, elementKinds, meshArrays, slotCount } from './mesh-arrays.js';
 
 export interface ChangeRecord {
   before: SlotState;
@@ -65,7 +65,7 @@ export function applyChange(mesh: HalfedgeMesh, record: ChangeRecord, direction:
   const to = forward ? record.after : record.before;
   mesh.makeRoom({ vertices: to.vertexSlots, edges: to.edgeSlots, faces: to.faceSlots });
   // slots coming into use start as a new element does, before the record's writes land on them
-  for (const spec of meshArrays) mesh[spec.name].fill(spec.initial, slotsOf(from, spec.owner), slotsOf(to, spec.owner));
+  for (const spec of meshArrays) mesh[spec.name].fill(spec.initial, slotCount(from, spec.owner), slotCount(to, spec.owner));
   const { array, index, old, new: now } = record.pointers;
   const values = forward ? now : old;
   for (let i = 0; i < array.length; i++) mesh[meshArrays[array[i]].name][index[i]] = values[i];
@@ -196,10 +196,6 @@ export function positionsChange(mesh: HalfedgeMesh, oldPositions: Float64Array):
   };
 }
 
-/** Slots a kind of element has in a state (halfedges: two per edge slot). */
-function slotsOf(state: SlotState, kind: ElementKind): number {
-  return kind === 'halfedge' ? 2 * state.edgeSlots : kind === 'vertex' ? state.vertexSlots : kind === 'edge' ? state.edgeSlots : state.faceSlots;
-}
 
 /** The same change the other way round: applying it forwards undoes the original. */
 export function invertChange(record: ChangeRecord): ChangeRecord {

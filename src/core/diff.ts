@@ -44,19 +44,17 @@ export function pointerCopy(mesh: HalfedgeMesh): MeshPointers {
 export function diffPointers(before: MeshPointers, after: MeshPointers, limit = 10_000): PointerDiff {
   const changes: PointerChange[] = [];
   let total = 0;
-  const slots = (mesh: MeshPointers, kind: ElementKind) =>
-    kind === 'halfedge' ? 2 * mesh.edgeSlots : kind === 'vertex' ? mesh.vertexSlots : kind === 'edge' ? mesh.edgeSlots : mesh.faceSlots;
   const deleted: Record<string, (mesh: MeshPointers) => Uint8Array> = {
     halfedge: (mesh) => mesh.eDeleted,
     vertex: (mesh) => mesh.vDeleted,
     face: (mesh) => mesh.fDeleted,
   };
   const live = (mesh: MeshPointers, kind: ElementKind, id: number) =>
-    id < slots(mesh, kind) && deleted[kind](mesh)[kind === 'halfedge' ? id >> 1 : id] === 0;
+    id < slotCount(mesh, kind) && deleted[kind](mesh)[kind === 'halfedge' ? id >> 1 : id] === 0;
   // halfedges (next, prev, origin, face of each in turn), then vertices, then faces: as an edit reports them
   for (const kind of ['halfedge', 'vertex', 'face'] as const) {
     const fields = meshArrays.filter((spec) => spec.owner === kind && spec.field);
-    const count = Math.max(slots(before, kind), slots(after, kind));
+    const count = Math.max(slotCount(before, kind), slotCount(after, kind));
     for (let id = 0; id < count; id++) {
       const inBefore = live(before, kind, id);
       const inAfter = live(after, kind, id);

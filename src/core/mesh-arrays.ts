@@ -44,17 +44,24 @@ export const meshArrayIndex = Object.fromEntries(meshArrays.map((spec, i) => [sp
 
 export const elementKinds: readonly ElementKind[] = ['vertex', 'halfedge', 'edge', 'face'];
 
-/** Slots of each kind in use (deleted ones included). */
-export function slotCount(mesh: HalfedgeMesh, kind: ElementKind): number {
+/** Slot counts, as a mesh, its `slotState` or a copy of its pointers hold them. */
+export interface SlotCounts {
+  vertexSlots: number;
+  edgeSlots: number;
+  faceSlots: number;
+}
+
+/** Slots of a kind in use (deleted ones included): halfedges are two per edge slot. */
+export function slotCount(counts: SlotCounts, kind: ElementKind): number {
   switch (kind) {
     case 'vertex':
-      return mesh.vertexSlots;
+      return counts.vertexSlots;
     case 'halfedge':
-      return 2 * mesh.edgeSlots;
+      return 2 * counts.edgeSlots;
     case 'edge':
-      return mesh.edgeSlots;
+      return counts.edgeSlots;
     case 'face':
-      return mesh.faceSlots;
+      return counts.faceSlots;
   }
 }
 
@@ -71,9 +78,12 @@ export function attributeSetOf(mesh: HalfedgeMesh, kind: ElementKind): Attribute
   }
 }
 
-/** The array itself (its full capacity: only the first `slotCount` entries are elements). */
-export function meshArray(mesh: HalfedgeMesh, name: MeshArrayName): Int32Array | Uint8Array {
-  return mesh[name];
+/** Bytes the mesh's arrays and attributes take, at their capacity. */
+export function meshByteLength(mesh: HalfedgeMesh): number {
+  let bytes = 0;
+  for (const { name } of meshArrays) bytes += mesh[name].byteLength;
+  for (const kind of elementKinds) for (const { data } of attributeSetOf(mesh, kind)) bytes += data.byteLength;
+  return bytes;
 }
 
 /** Replaces an array (growth, trimming, compaction, adopting a serialized one). */

@@ -5,7 +5,6 @@
  */
 import { Box3, Vector3 } from 'three';
 import {
-  deserializeMesh,
   faceCentroid,
   faceVectorArea,
   faceVertices,

@@ -14,7 +14,7 @@
  * mesh directly (no copy) and hands its record to `pushChange`, and undo and redo apply one record.
  */
 import { applyChange, type ChangeRecord, changeBytes, type HalfedgeMesh } from '../core/index.js';
-import { attributeSetOf, elementKinds, meshArrays } from '../core/mesh-arrays.js';
+import { meshByteLength } from '../core/mesh-arrays.js';
 
 /** Spare slots of each kind a whole mesh keeps, so that the edits after it rarely copy it to grow. */
 export const EDIT_ROOM = 1024;
@@ -100,13 +100,7 @@ export class History<Info> {
   /** Bytes the history holds: whole meshes (their capacity) and change records. */
   bytes(): number {
     let total = 0;
-    for (const { mesh, change } of this.entries) {
-      if (change) total += changeBytes(change);
-      if (mesh) {
-        for (const { name } of meshArrays) total += mesh[name].byteLength;
-        for (const kind of elementKinds) for (const { data } of attributeSetOf(mesh, kind)) total += data.byteLength;
-      }
-    }
+    for (const { mesh, change } of this.entries) total += (change ? changeBytes(change) : 0) + (mesh ? meshByteLength(mesh) : 0);
     return total;
   }
 

@@ -270,13 +270,14 @@ export class EditingSession {
     const positions = stepping.startPositions ? working.positions.slice(0, 3 * working.vertexSlots) : null;
     const before = positions ? null : pointerCopy(working);
     const phaseDiff = () => (before ? diffPointers(before, working, DIFF_LIMIT) : { changes: [], total: 0 });
+    const phaseChange = () => (positions ? positionsChange(working, positions) : null);
     let next = stepping.operation.next();
     this.state++;
     if (!next.done) {
       stepping.phases++;
       stepping.phase = next.value;
       stepping.diff = phaseDiff();
-      if (stepping.total === null || stepping.phases < stepping.total) return positions ? positionsChange(working, positions) : null;
+      if (stepping.total === null || stepping.phases < stepping.total) return phaseChange();
       // that was the last announced phase: let the operation finish now, so no empty step follows
       next = stepping.operation.next();
       if (!next.done) {
@@ -285,7 +286,7 @@ export class EditingSession {
         stepping.phase = next.value;
         stepping.diff = phaseDiff();
         stepping.total = null;
-        return positions ? positionsChange(working, positions) : null;
+        return phaseChange();
       }
     }
     // the operation is over: its result joins the history
@@ -299,7 +300,7 @@ export class EditingSession {
     };
     if (stepping.startPositions) this.history.pushChange(stepping.label, positionsChange(working, stepping.startPositions), info);
     else this.history.pushMesh(stepping.label, working, info);
-    return positions ? positionsChange(working, positions) : null;
+    return phaseChange();
   }
 
   /**

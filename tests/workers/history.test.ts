@@ -1,16 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, type HalfedgeMesh, positionsChange, smooth, subdivide, torus, uvSphere, validate } from '../../src/index.js';
+import { buildMesh, meshByteLength, positionsChange, smooth, subdivide, torus, uvSphere, validate } from '../../src/index.js';
 import { History } from '../../src/workers/history.js';
 import { applyEdit } from '../../src/workers/operations.js';
 import { sphereWithFaces } from '../../bench/cases/build.js';
 import { meshContents } from '../core/contents.js';
 
-/** Bytes of a mesh's own arrays and attributes, at their capacity. */
-const meshBytes = (mesh: HalfedgeMesh) => {
-  const history = new History<null>();
-  history.pushMesh('measure', mesh.clone(), null);
-  return history.bytes();
-};
 
 describe('History', () => {
   it('keeps each local edit as its change record, and gives every mesh back exactly', () => {
@@ -33,7 +27,7 @@ describe('History', () => {
     }
     expect(history.mesh()).toBe(mesh);
     // one whole mesh and five records of a few hundred bytes each
-    expect(history.bytes()).toBeLessThan(meshBytes(mesh) + 5 * 2000);
+    expect(history.bytes()).toBeLessThan(meshByteLength(mesh) + 5 * 2000);
     for (const index of [0, 3, 1, 5, 2, 4, 0, 5]) {
       history.moveTo(index);
       expect(meshContents(history.mesh()!), `entry ${index}`).toEqual(expected[index]);
