@@ -159,6 +159,89 @@ test.describe('the classroom', () => {
     await expect(page.locator('#help-overlay')).toBeHidden();
   });
 
+  for (const [width, height] of [
+    [1280, 720],
+    [1024, 768],
+  ] as const) {
+    test(`at ${width} × ${height}, presentation mode has 20 px text, the demo's controls without scrolling, and overlays apart`, async ({ page }, testInfo) => {
+      await page.setViewportSize({ width, height });
+      await openApp(page, 'sphere.ply');
+      await page.evaluate(() => window.halfedgeLab.select('h1'));
+      await page.keyboard.press('m');
+      await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', 'true');
+
+      // every text on screen is at least 20 px (the 3D labels are larger still)
+      const smallTexts = () =>
+        page.evaluate(() =>
+          [...document.querySelectorAll('body *')]
+            .filter((node) => [...node.childNodes].some((child) => child.nodeType === Node.TEXT_NODE && child.textContent!.trim() !== ''))
+            .filter((node) => node.tagName !== 'OPTION' && node.checkVisibility())
+            .filter((node) => {
+              const box = node.getBoundingClientRect();
+              return box.width > 0 && box.bottom > 0 && box.top < innerHeight && box.right > 0 && box.left < innerWidth;
+            })
+            .filter((node) => parseFloat(getComputedStyle(node).fontSize) < 19.5)
+            .map((node) => `${node.tagName.toLowerCase()}.${node.className} "${node.textContent!.trim().slice(0, 30)}" ${getComputedStyle(node).fontSize}`),
+        );
+      expect(await smallTexts()).toEqual([]);
+
+      // the walk needs no scrolling: every walk button and Back are on screen
+      for (const button of await page.locator('#walk-buttons button').all()) await expect(button).toBeInViewport({ ratio: 1 });
+      await expect(page.getByRole('button', { name: 'Back one step' })).toBeInViewport({ ratio: 1 });
+      // the naming menu shows its whole text
+      const naming = await page.locator('#convention').evaluate((select: HTMLSelectElement) => {
+        const style = getComputedStyle(select);
+        const context = document.createElement('canvas').getContext('2d')!;
+        context.font = `${style.fontWeight} ${style.fontSize} ${style.fontFamily}`;
+        return { text: context.measureText(select.selectedOptions[0]!.text).width, room: select.clientWidth - parseFloat(style.paddingLeft) - 16 };
+      });
+      expect(naming.text).toBeLessThanOrEqual(naming.room);
+      await page.screenshot({ path: testInfo.outputPath('presentation-walk.png') });
+
+      // the record tables fold to their title, giving the view their height; D opens them
+      const stageHeight = () => page.locator('.stage').evaluate((node) => node.getBoundingClientRect().height);
+      const folded = await stageHeight();
+      expect(folded).toBeGreaterThan(0.7 * height);
+      await expect(page.locator('#tables-fold')).toHaveAttribute('aria-expanded', 'false');
+      await page.keyboard.press('d');
+      await expect(page.locator('#tables-fold')).toHaveAttribute('aria-expanded', 'true');
+      await expect(page.locator('.tables .table-row').first()).toBeVisible();
+      expect(await stageHeight()).toBeLessThan(folded - 100);
+      await page.keyboard.press('d');
+      await expect(page.locator('#tables-fold')).toHaveAttribute('aria-expanded', 'false');
+
+      // stepping a smoothing: Step, Run and Cancel come first; the colour scale, the legend and
+      // the status line stand apart
+      await page.getByRole('tab', { name: 'Operate' }).click();
+      await page.evaluate(async () => {
+        await window.halfedgeLab.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 3 } });
+        await window.halfedgeLab.step();
+      });
+      await expect(page.locator('#values-legend')).toBeVisible();
+      for (const name of ['Step one phase (S)', 'Run to end (G)', 'Cancel the operation (X)']) {
+        await expect(page.getByRole('button', { name })).toBeInViewport({ ratio: 1 });
+      }
+      const boxes = await page.evaluate(() => ['legend', 'values-legend', 'status', 'hud'].map((id) => document.getElementById(id)!.getBoundingClientRect().toJSON() as DOMRect));
+      const overlap = (a: DOMRect, b: DOMRect) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+      for (let i = 0; i < boxes.length; i++) for (let j = i + 1; j < boxes.length; j++) expect(overlap(boxes[i]!, boxes[j]!), `overlays ${i} and ${j} overlap`).toBe(false);
+      expect(await smallTexts()).toEqual([]);
+      await page.screenshot({ path: testInfo.outputPath('presentation-smoothing.png') });
+      await page.keyboard.press('x');
+      await expect(page.locator('#values-legend')).toBeHidden();
+      await expect(page.locator('#status')).toContainText('cancelled; the mesh is as it was');
+
+      // the other tabs and the key help: large type too, and the help fits
+      for (const tab of ['Quiz', 'File']) {
+        await page.getByRole('tab', { name: tab }).click();
+        expect(await smallTexts(), tab).toEqual([]);
+      }
+      await page.keyboard.press('?');
+      await expect(page.getByRole('button', { name: 'Close the key help' })).toBeInViewport({ ratio: 1 });
+      expect(await smallTexts()).toEqual([]);
+      await page.keyboard.press('Escape');
+    });
+  }
+
   test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
     await openApp(page, 'torus.off');
     await page.evaluate(() => window.halfedgeLab.select('h42'));

@@ -297,6 +297,7 @@ export class App {
   /** Draws a snapshot; `frame` points the camera at it (a newly opened mesh). */
   show(snapshot: Snapshot, frame: boolean): void {
     this.shown = { version: snapshot.version, at: performance.now() };
+    const before = this.snapshot;
     this.snapshot = snapshot;
     // the sample menu names the model the mesh on screen came from, wherever the history is
     this.sample = openedEntry(snapshot)?.sample ?? null;
@@ -322,9 +323,16 @@ export class App {
     void this.refreshArrows();
     this.tables.setMesh(mesh, this.convention);
     this.stepper.update(snapshot);
+    // while stepping, the Operate tab puts the stepper's buttons first
+    document.documentElement.classList.toggle('stepping', snapshot.stepping !== null);
     this.drawLegend();
     const stepping = steppingTitle(snapshot);
     if (stepping) this.say(`${stepping}.`);
+    else if (before?.stepping && !frame) {
+      // the status line said a phase: say how the operation ended, run through or cancelled
+      const grew = snapshot.history.index !== before.history.index || snapshot.history.items.length !== before.history.items.length;
+      this.say(grew ? `${before.stepping.label}: done.` : `${before.stepping.label}: cancelled; the mesh is as it was.`);
+    }
     this.history.update(snapshot);
     // a question on a changed mesh is asked again (its ids may be gone); a new model, or an
     // answered question's path on a changed mesh, leaves the view
@@ -405,6 +413,8 @@ export class App {
     document.documentElement.classList.toggle('presentation', on);
     byId('presentation').setAttribute('aria-pressed', String(on));
     this.surface.setEmphasis(this.scale);
+    // the room looks at the view: the record tables fold to their title (D opens them)
+    this.showTables(!on);
     void this.refreshArrows();
     this.drawSelection();
     // the view changed size with the layout: fit the mesh to it once the layout has settled
@@ -756,6 +766,7 @@ export class App {
     byId('frame-selection').addEventListener('click', () => this.frameSelection());
     byId('top-view').addEventListener('click', () => this.toggleTopView());
     byId('show-ids').addEventListener('click', () => this.toggleIds());
+    byId('tables-fold').addEventListener('click', () => this.showTables(!this.tablesShown));
     byId('walk-back').addEventListener('click', () => this.back());
     byId('cancel').addEventListener('click', () => void this.cancel());
     byId('presentation').addEventListener('click', () => this.setPresentation(this.scale === 1));
@@ -824,6 +835,17 @@ export class App {
     const hidden = document.documentElement.classList.toggle('overlays-hidden');
     this.say(hidden ? 'Legend and counts hidden: press K to show them.' : 'Legend and counts shown.');
     this.viewer.requestRender();
+  }
+
+  /** Shows the record tables, or folds them to their title so the view gets their height. */
+  showTables(show: boolean): void {
+    document.documentElement.classList.toggle('tables-folded', !show);
+    byId('tables-fold').setAttribute('aria-expanded', String(show));
+    if (show) this.tables.reveal(this.selection);
+  }
+
+  get tablesShown(): boolean {
+    return !document.documentElement.classList.contains('tables-folded');
   }
 
   toggleIds(): void {

@@ -26,6 +26,7 @@ export const keyBindings: KeyBinding[] = [
   { keys: ['o'], help: 'top view on or off', run: (app) => app.toggleTopView() },
   { keys: ['i'], help: 'label every vertex and face (small meshes)', run: (app) => app.toggleIds() },
   { keys: ['k'], help: 'hide or show the legend and the counts on the view', run: (app) => app.toggleOverlays() },
+  { keys: ['d'], help: 'fold or open the record tables (folded in presentation mode)', run: (app) => app.showTables(!app.tablesShown) },
   {
     keys: ['s', 'g', 'x'],
     help: 'step the operation / run it to the end / cancel it',
