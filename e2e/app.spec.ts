@@ -206,6 +206,21 @@ test.describe('the teaching app', () => {
       .toBe(next);
     expect(await page.evaluate(() => window.halfedgeLab.state().selection)).toBe(h);
     await page.screenshot({ path: testInfo.outputPath('fine-mesh-zoomed-in.png') });
+
+    // a flip rewires two triangles of the picking worker's copy, which refits its hierarchy: the
+    // new edge is picked where it is now drawn
+    const flipped = `h${2 * (Number(next.slice(1)) >> 1)}`;
+    const version = await page.evaluate(() => window.halfedgeLab.state().version);
+    await page.evaluate((edge) => window.halfedgeLab.edit({ kind: 'flip-edge', edge }), Number(next.slice(1)) >> 1);
+    expect(await page.evaluate(() => window.halfedgeLab.state().version)).toBeGreaterThan(version);
+    expect(await page.evaluate(() => window.halfedgeLab.state().patched)).toBe(true);
+    await page.evaluate((name) => window.halfedgeLab.select(name), flipped);
+    await expect
+      .poll(async () => {
+        const at = await page.evaluate((name) => window.halfedgeLab.screenPosition(name), flipped);
+        return page.evaluate(([x, y]) => window.halfedgeLab.pickAt(x as number, y as number, 'halfedge'), [at.x, at.y]);
+      })
+      .toBe(flipped);
   });
 
   test('plays a traversal step by step, highlighting the current line of code', async ({ page }) => {

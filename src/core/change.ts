@@ -196,6 +196,16 @@ export function positionsChange(mesh: HalfedgeMesh, oldPositions: Float64Array):
   };
 }
 
+/** The record of a change that changed nothing (starting an operation, say): a patch as cheap as it gets. */
+export function noChange(mesh: HalfedgeMesh): ChangeRecord {
+  const state = mesh.slotState;
+  return {
+    before: state,
+    after: state,
+    pointers: { array: new Uint8Array(0), index: new Int32Array(0), old: new Int32Array(0), new: new Int32Array(0) },
+    values: [],
+  };
+}
 
 /** The same change the other way round: applying it forwards undoes the original. */
 export function invertChange(record: ChangeRecord): ChangeRecord {

@@ -78,6 +78,8 @@ export class App {
   private arrowsHidden = false;
   /** Calls of refreshArrows so far: one that waited must not undo a later one. */
   private arrowRefreshes = 0;
+  /** The face last found in the middle of the view (-1: none yet), which arrows grow from without a selection. */
+  private viewFocus = -1;
   showIds = false;
   /** The last message shown to the student (an error, a walk that led nowhere…). */
   message = '';
@@ -320,7 +322,8 @@ export class App {
       byId('top-view').setAttribute('aria-pressed', String(planar));
       this.frameMesh();
     }
-    void this.refreshArrows();
+    // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
+    void this.refreshArrows(snapshot.renderPatch !== null);
     this.tables.setMesh(mesh, this.convention);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
@@ -677,7 +680,7 @@ export class App {
   }
 
   /** All arrows on a mesh of modest size; on a big one, those near the selection or the view. */
-  private async refreshArrows(): Promise<void> {
+  private async refreshArrows(sameView = false): Promise<void> {
     const mesh = this.mesh;
     if (!mesh) return;
     const call = ++this.arrowRefreshes;
@@ -685,7 +688,7 @@ export class App {
       this.arrows.update(mesh, null, this.scale);
     } else {
       // finding the face in the middle of the view may wait for the picking worker's hierarchy
-      const focus = await this.focusFace();
+      const focus = await this.focusFace(sameView);
       if (call !== this.arrowRefreshes) return; // a later refresh (a selection, a new mesh) has run
       this.arrows.update(mesh, focus < 0 ? new Int32Array(0) : halfedgesNear(mesh, focus), this.scale);
     }
@@ -724,8 +727,11 @@ export class App {
     if (this.mesh && this.mesh.nHalfedges > MAX_ARROWS) void this.refreshArrows();
   }
 
-  /** The face to grow the drawn arrows from: the selection's, or the one in the middle of the view. */
-  private async focusFace(): Promise<number> {
+  /**
+   * The face to grow the drawn arrows from: the selection's, or the one in the middle of the view
+   * (with `sameView`, the one found last time while it lives).
+   */
+  private async focusFace(sameView: boolean): Promise<number> {
     const mesh = this.mesh!;
     const s = this.selection;
     if (s?.kind === 'face') return s.id;
@@ -735,8 +741,11 @@ export class App {
       const h = mesh.vHalfedge[s.id];
       return mesh.heFace[h] >= 0 ? mesh.heFace[h] : mesh.heFace[mesh.hePrev[h] ^ 1];
     }
+    const last = this.viewFocus;
+    if (sameView && last >= 0 && last < mesh.faceSlots && mesh.fDeleted[last] === 0) return last;
     const { width, height } = this.viewer.size();
     const hit = await this.surface.raycast(this.viewer.ray(width / 2, height / 2));
+    this.viewFocus = hit ? hit.face : -1;
     if (hit) return hit.face;
     for (const f of mesh.faces()) return f;
     return -1;

@@ -22,6 +22,7 @@ import {
   meshFingerprint,
   type Operation,
   type Phase,
+  noChange,
   pointerCopy,
   pointerDiffOf,
   type PointerDiff,
@@ -120,7 +121,8 @@ export class EditingSession {
     const { operation, phases } = startOperation(working, request);
     const startPositions = inPlace ? current.positions.slice(0, 3 * current.vertexSlots) : null;
     this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null };
-    return this.send(undone, from);
+    // nothing has changed yet (the copy equals the mesh the page holds): an empty patch, not the whole mesh
+    return this.send(undone ?? noChange(current), from);
   }
 
   /** Runs the next phase; when the operation has no more, its result joins the history. */

@@ -56,6 +56,7 @@ describe('the page copy, patched', () => {
   ])('stays equal to the session’s mesh through random edits, undos, redos and phases (%s)', (_, file) => {
     const random = seededRandom(20261125);
     const editsPatched: boolean[] = [];
+    const startsPatched: boolean[] = [];
     const session = new EditingSession();
     session.adopt(loadFile(file(), 'model.off'));
     const page = pageSession(session);
@@ -78,8 +79,11 @@ describe('the page copy, patched', () => {
         check(page.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 2 } }), `${i}: smooth`);
         check(page.step(), `${i}: smoothing step`);
         check(random() < 0.5 ? page.cancel() : page.step(), `${i}: smoothing cancelled or done`);
+        // nothing has changed at the start: an empty patch, not the whole mesh again
+        startsPatched.push(page.patched.at(-3)!);
       } else {
         check(page.start({ kind: 'subdivide', scheme: 'catmull-clark' }), `${i}: subdivide`);
+        startsPatched.push(page.patched.at(-1)!);
         check(page.step(), `${i}: first phase`);
         check(page.cancel(), `${i}: cancelled`);
       }
@@ -87,5 +91,7 @@ describe('the page copy, patched', () => {
     // every edit reached the page as a patch: an edit costs what it changes
     expect(editsPatched.length).toBeGreaterThan(30);
     expect(editsPatched.every(Boolean)).toBe(true);
+    expect(startsPatched.length).toBeGreaterThan(5);
+    expect(startsPatched.every(Boolean)).toBe(true);
   });
 });

@@ -15,6 +15,8 @@ export interface PickingWrite {
 
 let bvh: MeshBVH | null = null;
 let held: { positions: Float32Array; triangles: Uint32Array } | null = null;
+/** How many triangles the hierarchy covers. */
+let covered = 0;
 
 /** Spare triangles kept for patches that add some. */
 const SPARE_TRIANGLES = 4096;
@@ -27,19 +29,26 @@ const api = {
     held = { positions, triangles: room };
     build(triangles.length / 3);
   },
-  /** Rewrites ranges of the positions and triangles (an edit's patch), then rebuilds the hierarchy. */
+  /**
+   * Rewrites ranges of the positions and triangles (an edit's patch). The same triangles, moved or
+   * rewired (a flip, a smoothing step, an undo), keep the hierarchy with its boxes refit, a
+   * fraction of a rebuild; a different number of triangles, or grown arrays, need a new one.
+   */
   patch(writes: PickingWrite[], triangles: number): void {
     if (!held) return;
+    let grown = false;
     for (const { buffer, offset, data } of writes) {
       const target = held[buffer];
       if (offset + data.length > target.length) {
-        const grown = new (target.constructor as new (n: number) => typeof target)(2 * (offset + data.length));
-        grown.set(target);
-        held[buffer] = grown as never;
+        const larger = new (target.constructor as new (n: number) => typeof target)(2 * (offset + data.length));
+        larger.set(target);
+        held[buffer] = larger as never;
+        grown = true;
       }
       (held[buffer] as Float32Array).set(data as Float32Array, offset);
     }
-    build(triangles);
+    if (bvh && !grown && triangles === covered) bvh.refit();
+    else build(triangles);
   },
   /** The first triangle the ray meets (from either side) and where; null when it misses. */
   raycast(origin: number[], direction: number[]): { triangle: number; point: number[] } | null {
@@ -56,6 +65,7 @@ function build(triangles: number): void {
   geometry.setDrawRange(0, 3 * triangles);
   // indirect: the triangles keep their order, which maps them to their faces (the hierarchy covers the draw range)
   bvh = new MeshBVH(geometry, { indirect: true });
+  covered = triangles;
 }
 
 export type PickingApi = typeof api;
