@@ -699,8 +699,11 @@ export class App {
   /**
    * Before each frame: edge lines and arrows only a few pixels long blur into a dark mass that
    * hides the surface, so they wait until the view zooms in (the selection stays highlighted).
+   * And the backs of the faces are not drawn where none can show (one closed surface facing out).
    */
   private fitDetail(): void {
+    const stats = this.snapshot?.stats;
+    this.surface.cullBackFaces(stats?.closed === true && stats.components === 1 && (stats.volume ?? 0) > 0, this.viewer.camera.position);
     // no edges (a point set), or only edges of no length: nothing that could crowd the view
     const pixels = this.surface.edgeLength > 0 ? this.surface.edgeLength * this.viewer.pixelsPerUnit() : Infinity;
     this.surface.showEdges(pixels >= MIN_EDGE_PIXELS);

@@ -5,9 +5,9 @@
  * bounding-volume hierarchy (three-mesh-bvh) for a large one.
  */
 import {
-  BackSide,
   BufferAttribute,
   BufferGeometry,
+  Color,
   DoubleSide,
   FrontSide,
   Group,
@@ -40,8 +40,10 @@ export class SurfaceLayer {
   private readonly faces = new BufferGeometry();
   private readonly lines = new BufferGeometry();
   private readonly vertices = new BufferGeometry();
-  private readonly front: Mesh;
-  private readonly back: Mesh;
+  /** Both sides in one draw (half the work of two), the back in its own shade. */
+  private readonly surface: Mesh<BufferGeometry, MeshStandardMaterial>;
+  /** The back side's colour, a uniform of the surface's shader. */
+  private readonly backColour = { value: new Color(colors.surfaceBack) };
   private readonly edges: LineSegments;
   private readonly dots: Points;
   /** Tests rays against both sides of every face; not drawn. */
@@ -56,13 +58,19 @@ export class SurfaceLayer {
   constructor() {
     // the surface sits a little behind the arrows and lines drawn in its plane
     const offset = { polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 2 };
-    this.front = new Mesh(this.faces, new MeshStandardMaterial({ color: colors.surface, flatShading: true, side: FrontSide, ...offset }));
-    this.back = new Mesh(this.faces, new MeshStandardMaterial({ color: colors.surfaceBack, flatShading: true, side: BackSide, ...offset }));
+    const material = new MeshStandardMaterial({ color: colors.surface, flatShading: true, side: DoubleSide, ...offset });
+    material.onBeforeCompile = (shader) => {
+      shader.uniforms.backColour = this.backColour;
+      shader.fragmentShader = shader.fragmentShader
+        .replace('void main() {', 'uniform vec3 backColour;\nvoid main() {')
+        .replace('vec4 diffuseColor = vec4( diffuse, opacity );', 'vec4 diffuseColor = vec4( gl_FrontFacing ? diffuse : backColour, opacity );');
+    };
+    this.surface = new Mesh(this.faces, material);
     this.edges = new LineSegments(this.lines, new LineBasicMaterial({ color: colors.edge }));
     this.dots = new Points(this.vertices, new PointsMaterial({ color: colors.edge, size: 4, sizeAttenuation: false }));
     // what is drawn is not what is picked: rays go to the pick target
-    for (const drawn of [this.front, this.back, this.edges, this.dots]) drawn.raycast = () => {};
-    this.group.add(this.front, this.back, this.edges, this.dots);
+    for (const drawn of [this.surface, this.edges, this.dots]) drawn.raycast = () => {};
+    this.group.add(this.surface, this.edges, this.dots);
   }
 
   /**
@@ -111,6 +119,19 @@ export class SurfaceLayer {
     this.dots.visible = counts.vertices <= MAX_DOTS || triangles === 0;
   }
 
+  /**
+   * Draws only the front of the faces when no back can show: a closed surface facing outwards,
+   * seen from outside its bounding sphere. Half the work for a renderer without a GPU.
+   */
+  cullBackFaces(closedFacingOut: boolean, eye: Vector3): void {
+    const sphere = this.faces.boundingSphere;
+    const frontOnly = closedFacingOut && sphere !== null && eye.distanceTo(sphere.center) > sphere.radius;
+    const side = frontOnly ? FrontSide : DoubleSide;
+    if (this.surface.material.side === side) return;
+    this.surface.material.side = side;
+    this.surface.material.needsUpdate = true;
+  }
+
   /** Shows or hides the edge lines (hidden where they would be denser than pixels). */
   showEdges(on: boolean): void {
     this.edges.visible = on;
@@ -138,9 +159,11 @@ export class SurfaceLayer {
    * Returns the scale, for the legend.
    */
   setVertexValues(values: ArrayLike<number> | null): ColourScale | null {
-    const materials = [this.front.material, this.back.material] as MeshStandardMaterial[];
+    const material = this.surface.material;
     const slots = this.vertices.drawRange.count;
     const scale = values && values.length === slots ? colourScale(values) : null;
+    // plain and plain again: nothing to change (a new shader variant costs a frame)
+    if (!scale && !material.vertexColors) return null;
     if (scale) {
       // as long as the positions (which keep room for more vertices)
       const colours = new Float32Array(this.faces.getAttribute('position').array.length);
@@ -148,11 +171,11 @@ export class SurfaceLayer {
       this.faces.setAttribute('color', new BufferAttribute(colours, 3));
     }
     else this.faces.deleteAttribute('color');
-    for (const material of materials) {
-      material.vertexColors = scale !== null;
-      material.color.set(scale ? '#ffffff' : material === this.front.material ? colors.surface : colors.surfaceBack);
-      material.needsUpdate = true;
-    }
+    // coloured by value, both sides show the colours
+    material.vertexColors = scale !== null;
+    material.color.set(scale ? '#ffffff' : colors.surface);
+    this.backColour.value.set(scale ? '#ffffff' : colors.surfaceBack);
+    material.needsUpdate = true;
     return scale;
   }
 
