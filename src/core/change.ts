@@ -182,17 +182,15 @@ export class ChangeRecorder {
   }
 }
 
-/** A change that moved vertices only: every position from `oldPositions` to the mesh's own. */
-export function positionsChange(mesh: HalfedgeMesh, oldPositions: Float64Array): ChangeRecord {
-  const count = mesh.vertexSlots;
-  const state = mesh.slotState;
+/**
+ * A change that moved vertices only: every position from `oldPositions` (a copy the record keeps,
+ * not copied again) to the mesh's own.
+ */
+export function positionsChange(mesh: HalfedgeMesh, oldPositions: Float64Array<ArrayBuffer>): ChangeRecord {
+  const count = 3 * mesh.vertexSlots;
   return {
-    before: state,
-    after: state,
-    pointers: { array: new Uint8Array(0), index: new Int32Array(0), old: new Int32Array(0), new: new Int32Array(0) },
-    values: [
-      { kind: 'vertex', name: 'position', itemSize: 3, index: null, start: 0, old: oldPositions.slice(0, 3 * count), new: mesh.positions.slice(0, 3 * count) },
-    ],
+    ...noChange(mesh),
+    values: [{ kind: 'vertex', name: 'position', itemSize: 3, index: null, start: 0, old: oldPositions.subarray(0, count), new: mesh.positions.slice(0, count) }],
   };
 }
 

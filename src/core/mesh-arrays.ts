@@ -9,7 +9,7 @@
  * (`attributeSetOf`).
  */
 import type { AttributeSet } from './attributes.js';
-import type { HalfedgeMesh } from './mesh.js';
+import type { HalfedgeMesh, MeshCapacity } from './mesh.js';
 
 export type ElementKind = 'vertex' | 'halfedge' | 'edge' | 'face';
 
@@ -63,6 +63,16 @@ export function slotCount(counts: SlotCounts, kind: ElementKind): number {
     case 'face':
       return counts.faceSlots;
   }
+}
+
+/** Entries per kind for a count of vertices, edges and faces: halfedges are two per edge. */
+export function lengthsByKind({ vertices, edges, faces }: MeshCapacity): Record<ElementKind, number> {
+  return { vertex: vertices, halfedge: 2 * edges, edge: edges, face: faces };
+}
+
+/** How many entries of each kind a set of mesh arrays has room for (a mesh's, or a serialized mesh's). */
+export function roomByKind(arrays: Pick<HalfedgeMesh, 'vHalfedge' | 'heNext' | 'eDeleted' | 'fHalfedge'>): Record<ElementKind, number> {
+  return { vertex: arrays.vHalfedge.length, halfedge: arrays.heNext.length, edge: arrays.eDeleted.length, face: arrays.fHalfedge.length };
 }
 
 export function attributeSetOf(mesh: HalfedgeMesh, kind: ElementKind): AttributeSet {

@@ -35,7 +35,7 @@
  */
 import { AttributeSet } from './attributes.js';
 import { InvalidInputError, TopologyError } from './errors.js';
-import { attributeSetOf, type ElementKind, elementKinds, meshArrays, setMeshArray, slotCount } from './mesh-arrays.js';
+import { attributeSetOf, type ElementKind, elementKinds, lengthsByKind, meshArrays, roomByKind, setMeshArray, slotCount } from './mesh-arrays.js';
 
 export interface MeshCapacity {
   vertices: number;
@@ -84,7 +84,7 @@ export class HalfedgeMesh {
 
   constructor(capacity: MeshCapacity = { vertices: 0, edges: 0, faces: 0 }) {
     const { vertices, edges, faces } = capacity;
-    const length: Record<ElementKind, number> = { vertex: vertices, halfedge: 2 * edges, edge: edges, face: faces };
+    const length = lengthsByKind(capacity);
     for (const spec of meshArrays) setMeshArray(this, spec.name, new spec.type(length[spec.owner]));
     this.vertexAttributes = new AttributeSet(vertices);
     this.halfedgeAttributes = new AttributeSet(2 * edges);
@@ -256,14 +256,9 @@ export class HalfedgeMesh {
   /** Makes room for at least this many slots of each kind, without changing any element. */
   reserve(capacity: Partial<MeshCapacity>): void {
     const { vertices = 0, edges = 0, faces = 0 } = capacity;
-    const wanted: Record<ElementKind, number> = { vertex: vertices, halfedge: 2 * edges, edge: edges, face: faces };
+    const wanted = lengthsByKind({ vertices, edges, faces });
     // decided before any array grows (the capacities are read off the arrays themselves)
-    const room: Record<ElementKind, number> = {
-      vertex: this.vHalfedge.length,
-      halfedge: this.heNext.length,
-      edge: this.eDeleted.length,
-      face: this.fHalfedge.length,
-    };
+    const room = roomByKind(this);
     const grows = (kind: ElementKind) => wanted[kind] > room[kind];
     for (const spec of meshArrays) {
       if (grows(spec.owner)) setMeshArray(this, spec.name, grow(this[spec.name], wanted[spec.owner], slotCount(this, spec.owner)));
@@ -335,14 +330,15 @@ export class HalfedgeMesh {
    * left behind, or keeps a little room so that the next edits do not copy the whole mesh to grow.
    */
   trim(spare = 0): void {
+    const room = lengthsByKind({ vertices: spare, edges: spare, faces: spare });
     for (const spec of meshArrays) {
       const array = this[spec.name];
-      const length = slotCount(this, spec.owner) + (spec.owner === 'halfedge' ? 2 * spare : spare);
-      if (array.length !== length) setMeshArray(this, spec.name, grow(array, length, Math.min(length, slotCount(this, spec.owner))));
+      const slots = slotCount(this, spec.owner);
+      if (array.length !== slots + room[spec.owner]) setMeshArray(this, spec.name, grow(array, slots + room[spec.owner], slots));
     }
     for (const kind of elementKinds) {
       const slots = slotCount(this, kind);
-      attributeSetOf(this, kind).resize(slots + (kind === 'halfedge' ? 2 * spare : spare), slots);
+      attributeSetOf(this, kind).resize(slots + room[kind], slots);
     }
   }
 

@@ -7,7 +7,7 @@
 import { type AttributeArray, type AttributeType, attributeTypeOf, type Interpolation } from './attributes.js';
 import { InvalidInputError } from './errors.js';
 import { HalfedgeMesh } from './mesh.js';
-import { attributeSetOf, type ElementKind, elementKinds, type MeshArrayName, meshArrays, setMeshArray, slotCount } from './mesh-arrays.js';
+import { attributeSetOf, type ElementKind, elementKinds, lengthsByKind, type MeshArrayName, meshArrays, roomByKind, setMeshArray, slotCount } from './mesh-arrays.js';
 
 export interface SerializedAttribute {
   name: string;
@@ -35,7 +35,8 @@ type MeshArrayType<name extends MeshArrayName> = name extends 'vDeleted' | 'eDel
  * elements the next edits add, so that whoever adopts the copy need not grow it at once).
  */
 export function serializeMesh(mesh: HalfedgeMesh, spare = 0): SerializedMesh {
-  const room = (kind: ElementKind) => slotCount(mesh, kind) + (kind === 'halfedge' ? 2 * spare : spare);
+  const extra = lengthsByKind({ vertices: spare, edges: spare, faces: spare });
+  const room = (kind: ElementKind) => slotCount(mesh, kind) + extra[kind];
   const copy = <T extends AttributeArray | Int32Array | Uint8Array>(array: T, length: number, used: number): T => {
     const next = new (array.constructor as new (n: number) => T)(length);
     (next as Int32Array).set(array.subarray(0, used) as Int32Array);
@@ -77,14 +78,8 @@ export function deserializeMesh(serialized: SerializedMesh): HalfedgeMesh {
   if (serialized.format !== SERIALIZED_MESH_FORMAT) {
     throw new InvalidInputError(`serialized mesh: format ${String(serialized.format)}, this library reads format ${SERIALIZED_MESH_FORMAT}`);
   }
-  const room: Record<ElementKind, number> = {
-    vertex: serialized.vHalfedge.length,
-    halfedge: serialized.heNext.length,
-    edge: serialized.eDeleted.length,
-    face: serialized.fHalfedge.length,
-  };
-  const { vertices, edges, faces } = serialized.slots ?? {};
-  const slots: Record<ElementKind, number> = { vertex: vertices, halfedge: 2 * edges, edge: edges, face: faces };
+  const room = roomByKind(serialized);
+  const slots = lengthsByKind(serialized.slots ?? { vertices: NaN, edges: NaN, faces: NaN });
   for (const kind of elementKinds) {
     if (!Number.isInteger(slots[kind]) || slots[kind] < 0 || slots[kind] > room[kind]) {
       throw new InvalidInputError(`serialized mesh: ${slots[kind]} ${kind} slots do not fit arrays of ${room[kind]}`);

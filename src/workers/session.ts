@@ -56,7 +56,7 @@ interface Stepping {
   /** The mesh being changed, phase by phase: a copy, or the current mesh itself (`startPositions` set). */
   working: HalfedgeMesh;
   /** For an operation that only moves vertices, run in place: the positions to put back on cancel. */
-  startPositions: Float64Array | null;
+  startPositions: Float64Array<ArrayBuffer> | null;
   operation: Operation;
   phases: number;
   phase: Phase | null;
@@ -119,7 +119,7 @@ export class EditingSession {
     const working = inPlace ? current : current.clone();
     // throws (leaving the session as it was) when the operation does not apply
     const { operation, phases } = startOperation(working, request);
-    const startPositions = inPlace ? current.positions.slice(0, 3 * current.vertexSlots) : null;
+    const startPositions = inPlace ? positionsOf(current) : null;
     this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null };
     // nothing has changed yet (the copy equals the mesh the page holds): an empty patch, not the whole mesh
     return this.send(undone ?? noChange(current), from);
@@ -139,7 +139,7 @@ export class EditingSession {
     this.cancelRequested = false;
     const from = this.state;
     const mesh = this.stepping?.startPositions ? this.stepping.working : null;
-    const positions = mesh ? mesh.positions.slice(0, 3 * mesh.vertexSlots) : null;
+    const positions = mesh ? positionsOf(mesh) : null;
     while (this.stepping) {
       const label = this.stepping.label;
       this.stepOnce();
@@ -269,7 +269,7 @@ export class EditingSession {
     const stepping = this.stepping;
     if (!stepping) throw new TopologyError('no operation is being stepped: start one first');
     const { working } = stepping;
-    const positions = stepping.startPositions ? working.positions.slice(0, 3 * working.vertexSlots) : null;
+    const positions = stepping.startPositions ? positionsOf(working) : null;
     const before = positions ? null : pointerCopy(working);
     const phaseDiff = () => (before ? diffPointers(before, working, DIFF_LIMIT) : { changes: [], total: 0 });
     const phaseChange = () => (positions ? positionsChange(working, positions) : null);
@@ -316,7 +316,7 @@ export class EditingSession {
     this.state++;
     if (!stepping.startPositions) return null;
     const { working } = stepping;
-    const moved = working.positions.slice(0, 3 * working.vertexSlots);
+    const moved = positionsOf(working);
     working.positions.set(stepping.startPositions);
     return positionsChange(working, moved);
   }
@@ -330,4 +330,9 @@ export class EditingSession {
     if (!mesh) throw new TopologyError('no mesh is open yet');
     return mesh;
   }
+}
+
+/** A copy of the positions of a mesh's vertex slots (to put back, or to record a move from). */
+function positionsOf(mesh: HalfedgeMesh): Float64Array<ArrayBuffer> {
+  return mesh.positions.slice(0, 3 * mesh.vertexSlots);
 }

@@ -16,11 +16,11 @@ export interface LegendPhase {
 
 export function renderLegend(container: HTMLElement, phase: LegendPhase | null, convention: Convention): void {
   // presentation mode shows each label's first word only, to keep the legend to a line or two
-  const row = (style: string, label: string) =>
+  const row = (style: string, label: string, swatch = 'swatch') =>
     el(
       'div',
       { class: 'legend-row' },
-      el('span', { class: 'swatch', style, 'aria-hidden': 'true' }),
+      el('span', { class: swatch, style, 'aria-hidden': 'true' }),
       ...(label.includes(' ') ? [el('span', { class: 'long' }, label), el('span', { class: 'short', 'aria-hidden': 'true' }, label.split(' ')[0]!)] : [label]),
     );
   container.classList.toggle('stepping', phase !== null);
@@ -39,13 +39,7 @@ export function renderLegend(container: HTMLElement, phase: LegendPhase | null, 
     container,
     // the highlighted vertex is the one the naming names
     ...legend.map(({ role, label }) => row(swatchStyle(role), role === 'origin' ? `${convention} vertex` : label)),
-    el(
-      'div',
-      { class: 'legend-row' },
-      el('span', { class: 'swatch dashed', 'aria-hidden': 'true' }),
-      el('span', { class: 'long' }, 'boundary halfedge'),
-      el('span', { class: 'short', 'aria-hidden': 'true' }, 'boundary'),
-    ),
+    row('', 'boundary halfedge', 'swatch dashed'),
   );
 }
 
