@@ -2,6 +2,7 @@
 import { convert } from './convert.js';
 import { cutCommand } from './cut.js';
 import { decimateCommand } from './decimate.js';
+import { gradeCommand } from './grade.js';
 import { smoothCommand } from './smooth.js';
 import { stats } from './stats.js';
 import { subdivideCommand } from './subdivide.js';
@@ -22,4 +23,5 @@ export const commands: Record<string, Command> = {
   cut: cutCommand,
   smooth: smoothCommand,
   decimate: decimateCommand,
+  grade: gradeCommand,
 };

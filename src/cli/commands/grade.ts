@@ -1,0 +1,117 @@
+import { readFileSync } from 'node:fs';
+import { dirname, extname, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { Worker } from 'node:worker_threads';
+import { InvalidInputError } from '../../core/errors.js';
+import { type Exercise, findExercise, exercises, type GradeReport, gradeSolution, parseExercise, SolutionError } from '../../core/practice/index.js';
+import { type SandboxPort, sandboxRunner } from '../../workers/practice-runner.js';
+import { parseOptions, UsageError } from '../io.js';
+import type { Command } from './index.js';
+
+/** Memory a solution's worker thread may use before it is stopped. */
+const HEAP_LIMIT_MB = 256;
+
+export const gradeCommand: Command = {
+  usage: 'grade EXERCISE SOLUTION.js [--json]',
+  summary: 'run a practice solution (an exercise id or file); exit 0 all checks pass, 1 some fail, 2 it cannot load',
+  async run(args) {
+    const { values, positionals } = parseOptions(args, { json: { type: 'boolean' } }, 2);
+    const [exerciseArg, solutionPath] = positionals as [string, string];
+    const exercise = loadExercise(exerciseArg);
+    const source = readText(solutionPath);
+    let report: GradeReport;
+    try {
+      report = await gradeSolution(exercise.exercise, source, sandboxRunner(openWorkerSandbox), exercise.files);
+    } catch (error) {
+      if (!(error instanceof SolutionError)) throw error;
+      if (values.json) console.log(JSON.stringify(gradescopeRefused(exercise.exercise, error.message), null, 2));
+      throw new UsageError(`${solutionPath}: ${error.message}`);
+    }
+    if (values.json) console.log(JSON.stringify(gradescope(report), null, 2));
+    else {
+      for (const check of report.checks) console.log(`${check.passed ? 'pass' : 'FAIL'}  ${check.name}${check.passed ? '' : `\n      ${check.message}`}`);
+      const passed = report.checks.filter((c) => c.passed).length;
+      console.log(`${passed} of ${report.checks.length} checks pass`);
+    }
+    return report.passed ? 0 : 1;
+  },
+};
+
+/** A Gradescope `results.json`: one test per fixture and check, a point each. */
+export function gradescope(report: GradeReport) {
+  const tests = report.checks.map((check) => ({
+    name: check.name,
+    score: check.passed ? 1 : 0,
+    max_score: 1,
+    status: check.passed ? 'passed' : 'failed',
+    output: check.message,
+  }));
+  return { score: tests.reduce((sum, t) => sum + t.score, 0), max_score: tests.length, tests };
+}
+
+function gradescopeRefused(exercise: Exercise, message: string) {
+  const tests = exercise.fixtures.map((fixture) => ({ name: `${fixture.name}: loads`, score: 0, max_score: 1, status: 'failed', output: message }));
+  return { score: 0, max_score: tests.length, output: message, tests };
+}
+
+/** A built-in exercise by id, or an instructor's exercise file with its reference and fixture files. */
+function loadExercise(arg: string): { exercise: Exercise; files: Map<string, Uint8Array> } {
+  const builtIn = findExercise(arg);
+  if (builtIn) return { exercise: builtIn, files: new Map() };
+  if (!arg.endsWith('.json')) {
+    throw new UsageError(`unknown exercise '${arg}' (built in: ${exercises.map((e) => e.id).join(', ')}; or give an exercise .json file)`);
+  }
+  let doc: unknown;
+  try {
+    doc = JSON.parse(readText(arg));
+  } catch (error) {
+    if (error instanceof UsageError) throw error;
+    throw new UsageError(`${arg}: not JSON: ${(error as Error).message}`);
+  }
+  const folder = dirname(arg);
+  const referencePath = (doc as { reference?: unknown })?.reference;
+  if (typeof referencePath !== 'string') throw new UsageError(`${arg}: exercise: "reference" must name the reference solution's .js file`);
+  try {
+    const exercise = parseExercise(doc, readText(resolve(folder, referencePath)));
+    const files = new Map(exercise.fixtures.filter((f) => f.file).map((f) => [f.file!, readBytes(resolve(folder, f.file!))]));
+    return { exercise, files };
+  } catch (error) {
+    if (error instanceof InvalidInputError) throw new UsageError(`${arg}: ${error.message}`);
+    throw error;
+  }
+}
+
+function readBytes(path: string): Uint8Array {
+  try {
+    return readFileSync(path);
+  } catch (error) {
+    throw new UsageError(`cannot read ${path}: ${(error as NodeJS.ErrnoException).code ?? (error as Error).message}`);
+  }
+}
+
+function readText(path: string): string {
+  return new TextDecoder().decode(readBytes(path));
+}
+
+/** The worker file beside this one (`.ts` when run from source, `.js` when built). */
+const extension = extname(fileURLToPath(import.meta.url));
+const workerFile = new URL(`../grade-worker${extension}`, import.meta.url);
+/** From source, the worker thread first registers the TypeScript loader the command runs under. */
+const workerEntry =
+  extension === '.ts'
+    ? { code: `import('tsx/esm/api').then(({ register }) => (register(), import(${JSON.stringify(workerFile.href)})))`, eval: true }
+    : { code: workerFile, eval: false };
+
+function openWorkerSandbox(): SandboxPort {
+  const worker = new Worker(workerEntry.code, { eval: workerEntry.eval, resourceLimits: { maxOldGenerationSizeMb: HEAP_LIMIT_MB, maxYoungGenerationSizeMb: 32 }, stdout: true, stderr: true });
+  return {
+    post: (request) => worker.postMessage(request),
+    listen(onMessage, onFailure) {
+      worker.on('message', onMessage);
+      worker.on('error', (error: Error & { code?: string }) =>
+        onFailure(new Error(error.code === 'ERR_WORKER_OUT_OF_MEMORY' ? `it used more than ${HEAP_LIMIT_MB} MB of memory` : error.message)),
+      );
+    },
+    terminate: () => void worker.terminate(),
+  };
+}

@@ -1,0 +1,140 @@
+/**
+ * Grading one fixture from what the sandbox reported: the writes are replayed onto a copy of the
+ * fixture (so nothing the solution did inside the sandbox is trusted but its log), the result is
+ * validated and compared with the reference's, and when it is broken, the write after which the
+ * first of its broken invariants began to fail is found by validating after every write.
+ *
+ * ```
+ *   writes:      w0   w1   w2   w3   w4   (end)
+ *   next-prev:   ok   ok   BAD  ok   ok   ok      fixed again: a correct state in between, not blamed
+ *   vertex-h:    ok   ok   ok   BAD  BAD  BAD     still broken at the end: first broken = w3
+ * ```
+ */
+import type { HalfedgeMesh } from '../mesh.js';
+import { validate, type Violation } from '../validate.js';
+import { compareAnswers, compareMeshes } from './compare.js';
+import type { Exercise, Fixture } from './exercise.js';
+import type { RunOutput } from './run.js';
+import { applyWrite, describeWrite, type PracticeWrite } from './writes.js';
+
+export interface Check {
+  /** "fixture name: what is checked". */
+  name: string;
+  passed: boolean;
+  message: string;
+}
+
+/** The write after which an invariant that is still broken at the end first broke. */
+export interface FirstBroken {
+  /** Index in `writes`. */
+  write: number;
+  line: number | null;
+  /** The invariant, in words ("next(h12) = h15 but prev(h15) = h11"). */
+  invariant: string;
+  elements: { halfedges: number[]; vertices: number[]; faces: number[] };
+}
+
+export interface FixtureResult {
+  fixture: string;
+  checks: Check[];
+  writes: PracticeWrite[];
+  visits: number[];
+  firstBroken: FirstBroken | null;
+  /** The mesh after the solution's writes. */
+  after: HalfedgeMesh;
+}
+
+/** Above this many validations' worth of work (writes × halfedges), the first broken write is not searched. */
+const MAX_TRACE_WORK = 20_000_000;
+
+/**
+ * The checks of one fixture. `before` is the fixture's mesh (not changed); `reference` is what the
+ * reference answered and left.
+ */
+export function gradeFixture(
+  exercise: Exercise,
+  fixture: Fixture,
+  before: HalfedgeMesh,
+  output: RunOutput,
+  reference: { value: unknown; mesh: HalfedgeMesh },
+): FixtureResult {
+  const after = before.clone();
+  for (const write of output.writes) applyWrite(after, write);
+  const checks: Check[] = [];
+  const check = (what: string, message: string | null) => checks.push({ name: `${fixture.name}: ${what}`, passed: message === null, message: message ?? 'passed' });
+  const failure = output.error ? describeError(output) : null;
+  let firstBroken: FirstBroken | null = null;
+
+  if (exercise.kind === 'query') {
+    const write = output.writes[0];
+    check(
+      'answer',
+      failure ??
+        (write ? `a query must leave the mesh as it is, but ${at(write.line)}wrote ${describeWrite(write)}` : null) ??
+        compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh),
+    );
+  } else {
+    const problems = validate(after, { limit: 50 });
+    if (problems.length > 0) firstBroken = findFirstBroken(before, output.writes, problems);
+    check('valid mesh', problems.length === 0 ? null : describeBroken(problems, firstBroken, output));
+    check(
+      'same as the library',
+      failure ?? compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ?? compareMeshes(after, reference.mesh),
+    );
+  }
+  return { fixture: fixture.name, checks, writes: output.writes, visits: output.visits, firstBroken, after };
+}
+
+function at(line: number | null): string {
+  return line === null ? '' : `line ${line} `;
+}
+
+function describeError(output: RunOutput): string {
+  const error = output.error!;
+  const where = error.line === null ? '' : ` at line ${error.line}`;
+  if (error.name === 'BudgetError') return `stopped${where}: ${error.message}`;
+  if (error.name === 'PracticeApiError') return `${error.message}${where}`;
+  if (error.name === 'NotRun') return error.message;
+  return `your code threw ${error.name}${where}: ${error.message}`;
+}
+
+function describeBroken(problems: Violation[], first: FirstBroken | null, output: RunOutput): string {
+  const more = problems.length > 1 ? ` (${problems.length >= 50 ? '50 or more' : problems.length} invariants are broken in all)` : '';
+  if (!first) return `the mesh it leaves breaks an invariant: ${problems[0].message}${more}${output.error ? '; the code stopped before its end' : ''}`;
+  const write = output.writes[first.write];
+  return `the mesh it leaves breaks an invariant: ${first.invariant}, since write ${first.write + 1}, ${describeWrite(write)}${first.line === null ? '' : ` at line ${first.line}`}${more}`;
+}
+
+function keyOf(v: Violation): string {
+  return `${v.invariant}|${v.halfedges ?? ''}|${v.vertices ?? ''}|${v.faces ?? ''}`;
+}
+
+/**
+ * Replays the writes on a copy of `before`, validating after each, and returns the write after
+ * which the earliest of the `final` violations began its last unbroken stretch of failing. Null
+ * when the work would be too large (the fixture is big and the writes many).
+ */
+export function findFirstBroken(before: HalfedgeMesh, writes: readonly PracticeWrite[], final: Violation[]): FirstBroken | null {
+  if (writes.length === 0 || writes.length * before.halfedgeSlots > MAX_TRACE_WORK) return null;
+  const finalByKey = new Map(final.map((v) => [keyOf(v), v]));
+  const onset = new Map<string, number>();
+  let failing = new Set<string>(validate(before).map(keyOf).filter((k) => finalByKey.has(k)));
+  for (const key of failing) onset.set(key, -1);
+  const mesh = before.clone();
+  writes.forEach((write, i) => {
+    applyWrite(mesh, write);
+    const now = new Set(validate(mesh).map(keyOf).filter((k) => finalByKey.has(k)));
+    for (const key of now) if (!failing.has(key)) onset.set(key, i);
+    failing = now;
+  });
+  let best: [string, number] | null = null;
+  for (const [key, i] of onset) if (failing.has(key) && (!best || i < best[1])) best = [key, i];
+  if (!best || best[1] < 0) return null;
+  const violation = finalByKey.get(best[0])!;
+  return {
+    write: best[1],
+    line: writes[best[1]].line,
+    invariant: violation.message,
+    elements: { halfedges: violation.halfedges ?? [], vertices: violation.vertices ?? [], faces: violation.faces ?? [] },
+  };
+}

@@ -1,0 +1,84 @@
+/**
+ * A solution as the student writes it: a module whose default export is the function
+ * (`export default function (mesh, input) { … }`). It is parsed first (acorn), so a syntax error
+ * is reported at its line and column, and a solution that imports anything is refused before it
+ * runs: everything it needs is the mesh API. Then it is compiled as the body of a function, with
+ * `export default` become an assignment in place, so every line the engine reports is the
+ * student's own.
+ */
+import { parse, type Node } from 'acorn';
+
+/** The file name the engine gives the solution's frames (`//# sourceURL`), so stacks name its lines. */
+export const SOLUTION_FILE = 'solution.js';
+
+/** The variable the default export is assigned to in the compiled body. */
+const DEFAULT_EXPORT = '__solution';
+
+/** A solution that cannot be run: a syntax error, no default export, an import. */
+export class SolutionError extends Error {
+  override readonly name = 'SolutionError';
+  constructor(
+    message: string,
+    readonly line: number | null,
+  ) {
+    super(line === null ? message : `line ${line}: ${message}`);
+  }
+}
+
+/**
+ * The body of a function that evaluates the solution and returns its default export.
+ * @throws SolutionError for a syntax error, an import, an export other than one default.
+ */
+export function solutionBody(source: string): string {
+  let program: Node & { body: Node[] };
+  try {
+    program = parse(source, { ecmaVersion: 'latest', sourceType: 'module', locations: true }) as Node & { body: Node[] };
+  } catch (error) {
+    const { loc } = error as { loc?: { line: number; column: number } };
+    const message = (error as Error).message.replace(/\s*\(\d+:\d+\)$/, '');
+    throw new SolutionError(`syntax error: ${message}${loc ? ` (column ${loc.column + 1})` : ''}`, loc?.line ?? null);
+  }
+  const forbidden = findImport(program);
+  if (forbidden) throw new SolutionError('a solution cannot import anything: everything it needs is the mesh API', forbidden.loc!.start.line);
+  const exports = program.body.filter((node) => node.type.startsWith('Export'));
+  // (the parser itself refuses a second default export)
+  const defaults = exports.filter((node) => node.type === 'ExportDefaultDeclaration') as (Node & { declaration: Node })[];
+  const other = exports.find((node) => node.type !== 'ExportDefaultDeclaration');
+  if (other) throw new SolutionError('only `export default` is understood: export the function as the default', other.loc!.start.line);
+  if (defaults.length === 0) throw new SolutionError('no `export default`: write `export default function (mesh, input) { … }`', null);
+  const { start, declaration } = defaults[0];
+  const body = `${source.slice(0, start)}${DEFAULT_EXPORT} = ${source.slice(declaration.start)}`;
+  // the declaration and the return sit on the first and last lines, so line numbers stay the student's
+  return `"use strict"; let ${DEFAULT_EXPORT}; ${body}\n;return ${DEFAULT_EXPORT};\n//# sourceURL=${SOLUTION_FILE}`;
+}
+
+/** The first `import` declaration, `import(…)` or `import.meta` anywhere in the tree. */
+function findImport(node: unknown): Node | null {
+  if (!node || typeof node !== 'object') return null;
+  if (Array.isArray(node)) {
+    for (const child of node) {
+      const found = findImport(child);
+      if (found) return found;
+    }
+    return null;
+  }
+  const typed = node as Node;
+  const isImportMeta = typed.type === 'MetaProperty' && (typed as Node & { meta: { name: string } }).meta.name === 'import';
+  if (typed.type === 'ImportDeclaration' || typed.type === 'ImportExpression' || isImportMeta) return typed;
+  for (const [key, value] of Object.entries(node)) {
+    if (key === 'loc' || typeof value !== 'object') continue;
+    const found = findImport(value);
+    if (found) return found;
+  }
+  return null;
+}
+
+/**
+ * The solution's line in a stack trace: the first frame in `SOLUTION_FILE`, minus `offset` (the
+ * lines the engine puts before a compiled body). Null when no frame is the solution's.
+ */
+export function solutionLine(stack: string | undefined, offset: number): number | null {
+  if (!stack) return null;
+  const match = /solution\.js:(\d+):\d+/.exec(stack);
+  return match ? Number(match[1]) - offset : null;
+}

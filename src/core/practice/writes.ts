@@ -1,0 +1,106 @@
+/**
+ * What a student's code wrote, one entry per store, in the order it happened, with the source line
+ * that made it. The same list replays onto the mesh the code was given (`replayWrites`), so the
+ * grader rebuilds the result outside the sandbox and the page shows the mesh after any write.
+ *
+ * ```
+ *   setNext(h4, h9) at line 12  ──►  { field: 'next', index: 4, old: 5, new: 9, line: 12 }
+ *                                    { field: 'prev', index: 9, old: 8, new: 4, line: 12 }
+ *   newEdge()       at line 13  ──►  { field: 'newEdge', index: 18, old: null, new: null, line: 13 }
+ * ```
+ */
+import type { HalfedgeMesh } from '../mesh.js';
+
+/** The pointer fields a solution writes, named as the mesh API names them. */
+export type PointerWriteField = 'next' | 'prev' | 'origin' | 'face' | 'vertexHalfedge' | 'faceHalfedge';
+
+export type PracticeWrite =
+  | { field: PointerWriteField; index: number; old: number; new: number; line: number | null }
+  | { field: 'position'; index: number; old: number[]; new: number[]; line: number | null }
+  /** A new element: `index` is its id (for an edge, halfedges 2·index and 2·index + 1); a vertex's `new` is its position. */
+  | { field: 'newVertex'; index: number; old: null; new: number[]; line: number | null }
+  | { field: 'newEdge' | 'newFace'; index: number; old: null; new: null; line: number | null }
+  | { field: 'deleteVertex' | 'deleteEdge' | 'deleteFace'; index: number; old: null; new: null; line: number | null };
+
+/** The mesh array each pointer field is stored in. */
+export const pointerArrayOf = {
+  next: 'heNext',
+  prev: 'hePrev',
+  origin: 'heVertex',
+  face: 'heFace',
+  vertexHalfedge: 'vHalfedge',
+  faceHalfedge: 'fHalfedge',
+} as const satisfies Record<PointerWriteField, keyof HalfedgeMesh>;
+
+/** Applies one write to `mesh` (which must be as it was before that write). */
+export function applyWrite(mesh: HalfedgeMesh, write: PracticeWrite): void {
+  switch (write.field) {
+    case 'position':
+      mesh.setPosition(write.index, write.new[0], write.new[1], write.new[2]);
+      return;
+    case 'newVertex':
+      expectId(mesh.addVertex(write.new[0], write.new[1], write.new[2]), write);
+      return;
+    case 'newEdge':
+      expectId(mesh.addEdge(), write);
+      return;
+    case 'newFace':
+      expectId(mesh.addFace(), write);
+      return;
+    case 'deleteVertex':
+      mesh.deleteVertex(write.index);
+      return;
+    case 'deleteEdge':
+      mesh.deleteEdge(write.index);
+      return;
+    case 'deleteFace':
+      mesh.deleteFace(write.index);
+      return;
+    default:
+      mesh[pointerArrayOf[write.field]][write.index] = write.new;
+  }
+}
+
+/** `mesh` after the first `count` writes (all of them by default), applied in place. */
+export function replayWrites(mesh: HalfedgeMesh, writes: readonly PracticeWrite[], count = writes.length): HalfedgeMesh {
+  for (let i = 0; i < count; i++) applyWrite(mesh, writes[i]);
+  return mesh;
+}
+
+function expectId(id: number, write: PracticeWrite): void {
+  // slots are handed out in order, so a replay makes the same ids as the run did
+  if (id !== write.index) throw new Error(`replaying ${write.field} made id ${id}, the run made ${write.index}`);
+}
+
+/** One write in words, as the student wrote it: `next(h4) = h9`, `newEdge() → h18, h19`. */
+export function describeWrite(write: PracticeWrite): string {
+  const name = (field: PointerWriteField, id: number) => {
+    if (id === -1) return '-1';
+    const prefix = field === 'origin' ? 'v' : field === 'face' ? 'f' : 'h';
+    return `${prefix}${id}`;
+  };
+  switch (write.field) {
+    case 'position':
+      return `position(v${write.index}) = [${write.new.map(round).join(', ')}]`;
+    case 'newVertex':
+      return `newVertex() → v${write.index}`;
+    case 'newEdge':
+      return `newEdge() → h${2 * write.index}, h${2 * write.index + 1}`;
+    case 'newFace':
+      return `newFace() → f${write.index}`;
+    case 'deleteVertex':
+      return `deleteVertex(v${write.index})`;
+    case 'deleteEdge':
+      return `deleteEdge(e${write.index})`;
+    case 'deleteFace':
+      return `deleteFace(f${write.index})`;
+    default: {
+      const owner = write.field === 'vertexHalfedge' ? 'v' : write.field === 'faceHalfedge' ? 'f' : 'h';
+      return `${write.field}(${owner}${write.index}) = ${name(write.field, write.new)}`;
+    }
+  }
+}
+
+function round(x: number): string {
+  return String(Math.round(x * 1e4) / 1e4);
+}

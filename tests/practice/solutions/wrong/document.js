@@ -1,0 +1,4 @@
+export default function (mesh, v) {
+  document.title = 'hello';
+  return 3;
+}

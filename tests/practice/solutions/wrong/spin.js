@@ -1,0 +1,4 @@
+export default function (mesh, v) {
+  let i = 0;
+  while (true) i++;
+}

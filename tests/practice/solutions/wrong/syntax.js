@@ -1,0 +1,3 @@
+export default function (mesh, v) {
+  return mesh.vertexHalfedge(v;
+}
