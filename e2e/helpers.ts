@@ -2,6 +2,11 @@ import type { Page } from '@playwright/test';
 
 /** Opens the app (optionally on a sample model, optionally from another server) and waits for the first mesh. */
 export async function openApp(page: Page, model?: string, origin = ''): Promise<void> {
+  await openAppAt(page, `${origin}/${model ? `?model=${encodeURIComponent(model)}` : ''}`);
+}
+
+/** Opens the app at a path and query of its own (`/?exercise=flip-edge`) and waits for the first mesh. */
+export async function openAppAt(page: Page, url: string): Promise<void> {
   const errors: string[] = [];
   page.on('pageerror', (error) => errors.push(error.message));
   page.on('console', (message) => {
@@ -9,7 +14,7 @@ export async function openApp(page: Page, model?: string, origin = ''): Promise<
     if (message.type() === 'error' && !message.text().includes('favicon')) errors.push(message.text());
   });
   (page as Page & { appErrors?: string[] }).appErrors = errors;
-  await page.goto(`${origin}/${model ? `?model=${encodeURIComponent(model)}` : ''}`);
+  await page.goto(url);
   await page.waitForFunction(() => window.halfedgeLab !== undefined);
   await page.evaluate(() => window.halfedgeLab.ready);
 }

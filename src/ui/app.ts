@@ -12,8 +12,10 @@ import {
   meshToHalfedgeJSON,
   type Repair,
   type RepairIncident,
+  serializeMesh,
   vertexAdjacentFaces,
 } from '../core/index.js';
+import { pointerChangeOf } from '../core/practice/writes.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
@@ -28,6 +30,7 @@ import { renderHud } from './panels/hud.js';
 import { renderInspector } from './panels/inspector.js';
 import { renderLegend, renderValuesLegend } from './panels/legend.js';
 import { OperationsPanel } from './panels/operations.js';
+import type { PracticePanel } from './panels/practice.js';
 import { QuizPanel } from './panels/quiz.js';
 import { StepperPanel, steppingTitle } from './panels/stepper.js';
 import { RecordTables } from './panels/tables.js';
@@ -59,6 +62,9 @@ const MIN_ARROW_EDGE_PIXELS = 5;
 
 /** How long the changes must pause before the full counts and checks are asked for. */
 const DETAILS_AFTER_MS = 400;
+
+const tabs = ['inspect', 'operate', 'quiz', 'practice', 'file'] as const;
+export type Tab = (typeof tabs)[number];
 
 export class App {
   readonly client: SessionClient;
@@ -101,6 +107,8 @@ export class App {
   private readonly stepper: StepperPanel;
   private readonly history: HistoryPanel;
   readonly quiz: QuizPanel;
+  /** The Practice tab, loaded with its editor and grader when first asked for (see `practice()`). */
+  private practicePanel: Promise<PracticePanel> | null = null;
   private readonly gizmo: PlaneGizmo;
   private quizSpec: HighlightSpec | null = null;
   /** A repair from the build report being shown (cleared by the next selection). */
@@ -173,6 +181,27 @@ export class App {
     renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move), this.convention);
     this.wireControls();
     this.drawPanels();
+  }
+
+  /** The Practice tab's panel, its code loaded on first use: the page's first load does without it. */
+  practice(): Promise<PracticePanel> {
+    this.practicePanel ??= import('./panels/practice.js').then(
+      ({ PracticePanel }) =>
+        new PracticePanel(byId('practice'), {
+      showState: async (mesh, label, write, frame) => {
+        const change = write ? pointerChangeOf(write) : null;
+        try {
+          this.show(await this.client.practice(serializeMesh(mesh), label, change ? { changes: [change], total: 1 } : null), frame);
+          this.say(`${label[0].toUpperCase()}${label.slice(1)}.`);
+        } catch (error) {
+          this.say((error as Error).message, 'alert');
+        }
+      },
+      select: (kind, id) => this.select({ kind, id }),
+      say: (message, role) => this.say(message, role),
+        }),
+    );
+    return this.practicePanel;
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -483,9 +512,11 @@ export class App {
     byId('error-panel').hidden = false;
   }
 
-  showTab(name: 'inspect' | 'operate' | 'quiz' | 'file'): void {
+  showTab(name: Tab): void {
     if (name !== 'quiz' && this.quizSpec) this.quiz.end();
-    for (const tab of ['inspect', 'operate', 'quiz', 'file']) {
+    // the editor is loaded when the tab is first opened
+    if (name === 'practice') void this.practice().then((panel) => panel.open());
+    for (const tab of tabs) {
       byId(`tab-${tab}`).setAttribute('aria-selected', String(tab === name));
       byId(`pane-${tab}`).hidden = tab !== name;
     }
@@ -786,7 +817,7 @@ export class App {
     byId('help').addEventListener('click', () => this.toggleHelp());
     byId('help-close').addEventListener('click', () => this.toggleHelp(false));
     byId('error-dismiss').addEventListener('click', () => (byId('error-panel').hidden = true));
-    for (const tab of ['inspect', 'operate', 'quiz', 'file'] as const) byId(`tab-${tab}`).addEventListener('click', () => this.showTab(tab));
+    for (const tab of tabs) byId(`tab-${tab}`).addEventListener('click', () => this.showTab(tab));
 
     // drop a file anywhere on the page
     const hint = byId('drop-hint');

@@ -89,6 +89,29 @@ export function automation(app: App) {
       },
       score: () => ({ right: app.quiz.right, asked: app.quiz.asked }),
     },
+    /**
+     * Practice mode (see docs/practice.md): `load(id)` opens an exercise in the Practice tab,
+     * `setCode(text)` puts a solution in the editor, `run()` runs it on every fixture and resolves
+     * to `{ passed, checks, writes, firstBroken, fixtures, error }`; `show(fixture, n)` shows a
+     * fixture after its first n writes; `state()` is what the panel shows.
+     */
+    practice: {
+      list: async () => (await app.practice()).exercises.map((e) => e.id),
+      load: async (id: string) => {
+        const panel = await app.practice();
+        panel.load(id);
+        app.showTab('practice');
+        await panel.open();
+      },
+      setCode: async (text: string) => {
+        const panel = await app.practice();
+        await panel.open();
+        panel.setCode(text);
+      },
+      run: async () => (await app.practice()).run(),
+      show: async (fixture: number, writes: number) => (await app.practice()).show(fixture, writes),
+      state: async () => (await app.practice()).state(),
+    },
     /** The session's fingerprint of its mesh and the page's of its own copy (`meshFingerprint`): equal when every patch landed right. */
     fingerprints: () => app.client.fingerprints(),
     /** Stops the editing worker as if it had run out of memory (the page should restart it and restore the mesh). */

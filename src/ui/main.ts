@@ -24,6 +24,20 @@ async function openFirstModel(): Promise<void> {
   }
 }
 
+/** `?exercise=…` opens an exercise in the Practice tab (after the first model: the view is never empty). */
+async function openExercise(): Promise<void> {
+  const value = new URLSearchParams(location.search).get('exercise');
+  if (!value) return;
+  try {
+    const { exerciseFromLink } = await import('./practice-link.js');
+    (await app.practice()).add(await exerciseFromLink(value));
+    app.showTab('practice');
+  } catch (error) {
+    app.say(`Could not open the exercise ${value}: ${(error as Error).message}`, 'alert');
+  }
+}
+
 void openFirstModel().then(() => {
+  void openExercise();
   if (import.meta.env.PROD) void keepForOffline().catch(() => {});
 });

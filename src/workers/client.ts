@@ -13,7 +13,7 @@
  *   const snapshot = await client.open(new Uint8Array(await file.arrayBuffer()), file.name);
  */
 import { proxy, type Remote, transfer, wrap } from 'comlink';
-import { meshFingerprint, type SerializedMesh, serializeMesh } from '../core/index.js';
+import { meshFingerprint, type PointerDiff, type SerializedMesh, serializeMesh } from '../core/index.js';
 import { PageCopy, type PageSnapshot } from './page-copy.js';
 import {
   type EditRequest,
@@ -144,6 +144,11 @@ export class SessionClient {
   /** Puts back a mesh (e.g. the page's own copy) as a new history entry. */
   restore(mesh: SerializedMesh, label: string): Promise<PageSnapshot> {
     return this.call((session) => session.restore(mesh, label));
+  }
+
+  /** Shows a state of a practice run (see `SessionApi.practice`). */
+  practice(mesh: SerializedMesh, label: string, diff: PointerDiff | null): Promise<PageSnapshot> {
+    return this.call((session) => session.practice(mesh, label, diff));
   }
 
   /** Stops the session worker as if it had crashed (for tests of the recovery). */

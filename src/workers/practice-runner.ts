@@ -7,7 +7,9 @@
  * had to be terminated are not run (they would most likely spin too, each for the whole limit).
  */
 import { serializeMesh } from '../core/index.js';
-import { type FixtureRun, type RunOutput, SolutionError, type SolutionRunner } from '../core/practice/index.js';
+import type { FixtureRun, SolutionRunner } from '../core/practice/grade-solution.js';
+import type { RunOutput } from '../core/practice/run.js';
+import { SolutionError } from '../core/practice/solution-error.js';
 import type { SandboxMessage, SandboxRequest } from './practice-sandbox.js';
 
 /** What the runner needs of a worker. */

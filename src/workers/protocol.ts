@@ -120,7 +120,9 @@ export type HistorySource =
   | { kind: 'open'; name: string; sample: string | null }
   | { kind: 'operation'; request: OperationRequest }
   | { kind: 'edit'; request: EditRequest }
-  | { kind: 'restore' };
+  | { kind: 'restore' }
+  /** A state of a practice run: a fixture after some of a solution's writes (it may break invariants). */
+  | { kind: 'practice' };
 
 /** The operation being stepped, if any. */
 export interface SteppingState {
@@ -185,6 +187,8 @@ export interface SessionApi {
   adopt(loaded: LoadedFile, sample: string | null): Promise<Snapshot>;
   /** Puts back a mesh the page kept (after the worker had to be restarted). */
   restore(mesh: SerializedMesh, label: string): Promise<Snapshot>;
+  /** Shows a state of a practice run, with the write that led to it as the diff; replaces the practice state shown before. */
+  practice(mesh: SerializedMesh, label: string, diff: PointerDiff | null): Promise<Snapshot>;
   snapshot(): Promise<Snapshot>;
   /** The full counts and checks of the current mesh (after a patched snapshot). */
   details(): Promise<SnapshotDetails>;

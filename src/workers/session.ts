@@ -104,6 +104,19 @@ export class EditingSession {
     return this.send(null, -1);
   }
 
+  /**
+   * Shows a state of a practice run: a fixture after some of a solution's writes, which may break
+   * invariants (the snapshot's problems say which). One history entry holds it, replaced by the
+   * next state shown, so stepping through a run does not bury the meshes before it.
+   */
+  practice(serialized: SerializedMesh, label: string, diff: PointerDiff | null): Snapshot {
+    this.abandonStepping();
+    if (this.history.entry()?.info.source.kind === 'practice' && this.history.position > 0) this.history.moveTo(this.history.position - 1);
+    this.history.pushMesh(label, deserializeMesh(serialized), { source: { kind: 'practice' }, report: null, file: null, phase: null, diff });
+    this.state++;
+    return this.send(null, -1);
+  }
+
   /** Starts stepping an operation (on a copy, or in place when it only moves vertices); nothing changes until `step`. */
   start(request: OperationRequest): Snapshot {
     const current = this.currentMesh();

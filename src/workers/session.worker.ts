@@ -11,6 +11,7 @@ const send = (snapshot: Snapshot) => transfer(snapshot, transferables(snapshot))
 const api: SessionApi = {
   adopt: async (loaded, sample) => send(session.adopt(loaded, sample)),
   restore: async (mesh, label) => send(session.restore(mesh, label)),
+  practice: async (mesh, label, diff) => send(session.practice(mesh, label, diff)),
   snapshot: async () => send(session.snapshot()),
   details: async () => session.details(),
   fingerprint: async () => session.fingerprint(),

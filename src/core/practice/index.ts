@@ -10,5 +10,7 @@ export * from './grade.js';
 export * from './grade-solution.js';
 export * from './mesh-api.js';
 export * from './run.js';
+export * from './solution-error.js';
 export * from './source.js';
 export * from './writes.js';
+export * from './drawable.js';

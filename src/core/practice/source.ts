@@ -7,23 +7,13 @@
  * student's own.
  */
 import { parse, type Node } from 'acorn';
+import { SolutionError } from './solution-error.js';
 
 /** The file name the engine gives the solution's frames (`//# sourceURL`), so stacks name its lines. */
 export const SOLUTION_FILE = 'solution.js';
 
 /** The variable the default export is assigned to in the compiled body. */
 const DEFAULT_EXPORT = '__solution';
-
-/** A solution that cannot be run: a syntax error, no default export, an import. */
-export class SolutionError extends Error {
-  override readonly name = 'SolutionError';
-  constructor(
-    message: string,
-    readonly line: number | null,
-  ) {
-    super(line === null ? message : `line ${line}: ${message}`);
-  }
-}
 
 /**
  * The body of a function that evaluates the solution and returns its default export.

@@ -9,6 +9,7 @@
  *   newEdge()       at line 13  ──►  { field: 'newEdge', index: 18, old: null, new: null, line: 13 }
  * ```
  */
+import type { PointerChange } from '../diff.js';
 import type { HalfedgeMesh } from '../mesh.js';
 
 /** The pointer fields a solution writes, named as the mesh API names them. */
@@ -103,4 +104,21 @@ export function describeWrite(write: PracticeWrite): string {
 
 function round(x: number): string {
   return String(Math.round(x * 1e4) / 1e4);
+}
+
+/** The write as the pointer diff draws it (null for a write that is not a pointer: a position, a new or deleted element). */
+export function pointerChangeOf(write: PracticeWrite): PointerChange | null {
+  switch (write.field) {
+    case 'next':
+    case 'prev':
+    case 'origin':
+    case 'face':
+      return { element: 'halfedge', id: write.index, field: write.field, before: write.old, after: write.new };
+    case 'vertexHalfedge':
+      return { element: 'vertex', id: write.index, field: 'halfedge', before: write.old, after: write.new };
+    case 'faceHalfedge':
+      return { element: 'face', id: write.index, field: 'halfedge', before: write.old, after: write.new };
+    default:
+      return null;
+  }
 }

@@ -7,6 +7,9 @@ import type { MeshStats, Violation } from '../../core/index.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
 
+/** Problems listed on the view: more would cover the mesh they are about. */
+const SHOWN_PROBLEMS = 2;
+
 export function renderHud(container: HTMLElement, stats: MeshStats, problems: Violation[], select: (s: Selection) => void): void {
   const { vertices: V, edges: E, faces: F } = stats;
   // `short`: what presentation mode shows instead, on its one compact line
@@ -39,7 +42,7 @@ export function renderHud(container: HTMLElement, stats: MeshStats, problems: Vi
           el(
             'ul',
             {},
-            ...problems.slice(0, 5).map((problem) => {
+            ...problems.slice(0, SHOWN_PROBLEMS).map((problem) => {
               const culprit = culpritOf(problem);
               return el(
                 'li',
@@ -48,6 +51,7 @@ export function renderHud(container: HTMLElement, stats: MeshStats, problems: Vi
                 culprit ? el('button', { type: 'button', class: 'link', onclick: () => select(culprit) }, 'select the culprit') : null,
               );
             }),
+            problems.length > SHOWN_PROBLEMS ? el('li', { class: 'more' }, `and ${problems.length - SHOWN_PROBLEMS} more`) : null,
           ),
         );
   replace(container, counts, invariants);

@@ -1,0 +1,93 @@
+import { readFileSync } from 'node:fs';
+import { expect, type Page, test } from '@playwright/test';
+import { appErrors, openAppAt } from './helpers';
+
+const solution = (name: string) => readFileSync(new URL(`../tests/practice/solutions/${name}.js`, import.meta.url), 'utf8');
+
+/** Replaces the editor's text as a student would paste it, and runs it with the Run button. */
+async function typeAndRun(page: Page, code: string): Promise<void> {
+  await page.locator('.practice-editor .cm-content').click();
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Delete');
+  await page.keyboard.insertText(code);
+  await page.getByRole('button', { name: 'Run the solution' }).click();
+}
+
+test.describe('practice mode', () => {
+  test('?exercise=flip-edge: a correct flip passes, a wrong one is told its first broken invariant, and its writes can be stepped', async ({ page }, testInfo) => {
+    await openAppAt(page, '/?exercise=flip-edge');
+    await expect(page.locator('#tab-practice')).toHaveAttribute('aria-selected', 'true');
+    await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
+    await expect(page.locator('.practice-task h3')).toHaveText('Flip an edge');
+
+    await typeAndRun(page, solution('flip-edge'));
+    await expect(page.locator('.practice-summary')).toHaveText('All 10 checks pass.', { timeout: 15_000 });
+    expect(await page.evaluate(async () => (await window.halfedgeLab.practice.state()).progress['flip-edge'])).toBe(true);
+
+    await typeAndRun(page, solution('wrong/flip-forgets-vertex'));
+    await expect(page.locator('.practice-summary')).toHaveText('9 of 10 checks pass.', { timeout: 15_000 });
+    const broken = page.locator('.practice-broken');
+    await expect(broken).toContainText(/First broken: v\d+'s halfedge h\d+ does not start at v\d+\. It broke at write \d+, origin\(h\d+\) = v\d+, line 2[34]/);
+    // the culprit vertex is selected in the view, on the mesh the code left
+    const state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.selection).toMatch(/^v\d+$/);
+    expect(await page.evaluate(async () => (await window.halfedgeLab.practice.state()).shown)).toMatchObject({ fixture: 0, write: 18, drawn: 18 });
+    await page.screenshot({ path: testInfo.outputPath('practice-wrong-flip.png') });
+
+    // step back through the writes: the last ones are drawable, the half-way ones are said to be not
+    await page.getByRole('button', { name: 'Show the previous write' }).click();
+    await expect(page.locator('.practice-writes .note')).toContainText('after write 17 of 18');
+    await page.getByRole('button', { name: 'Show the fixture before any write' }).click();
+    await expect(page.locator('.practice-writes .note')).toHaveText('The view shows the fixture before any write.');
+    await page.locator('.practice-write-list li').nth(0).getByRole('button').click();
+    await expect(page.locator('.practice-writes .note')).toContainText('After write 1 the pointers are half-way rewired');
+    expect(appErrors(page)).toEqual([]);
+  });
+
+  test('an endless loop is stopped within 3 s while the page keeps drawing; an error names its line', async ({ page }) => {
+    await openAppAt(page, '/?exercise=vertex-degree');
+    await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
+    const frames = page.evaluate(
+      () =>
+        new Promise<number>((resolve) => {
+          let count = 0;
+          const start = performance.now();
+          const tick = () => (performance.now() - start < 2000 ? (count++, requestAnimationFrame(tick)) : resolve(count));
+          requestAnimationFrame(tick);
+        }),
+    );
+    const started = Date.now();
+    await typeAndRun(page, 'export default function (mesh, v) {\n  while (true) {}\n}\n');
+    await expect(page.locator('.practice-summary')).toHaveText('0 of 4 checks pass.', { timeout: 10_000 });
+    expect(Date.now() - started).toBeLessThan(3500);
+    expect(await frames).toBeGreaterThan(20);
+    await expect(page.locator('.practice-checks')).toContainText('your code ran for 2.5 s without returning');
+
+    await typeAndRun(page, 'export default function (mesh, v) {\n  const h = mesh.vertexHalfedge(v);\n  return h.length.value;\n}\n');
+    await expect(page.locator('.practice-checks')).toContainText('your code threw TypeError at line 3', { timeout: 10_000 });
+    await typeAndRun(page, 'export default function (mesh, v) {\n  return document.title;\n}\n');
+    await expect(page.locator('.practice-checks')).toContainText('your code threw ReferenceError at line 2: document is not defined', { timeout: 10_000 });
+    await typeAndRun(page, 'export default function (mesh, v) {\n  fetch("/models/index.json");\n  return 3;\n}\n');
+    await expect(page.locator('.practice-checks')).toContainText('at line 2: fetch is not available to a solution', { timeout: 10_000 });
+    await typeAndRun(page, 'export default function (mesh, v) {\n  return mesh.next(v;\n}\n');
+    await expect(page.locator('.practice-summary')).toHaveText('The code cannot run: line 2: syntax error: Unexpected token (column 21)', { timeout: 10_000 });
+    expect(appErrors(page)).toEqual([]);
+  });
+
+  test('the automation object runs a solution and reports the checks, the writes and the first broken write', async ({ page }) => {
+    await openAppAt(page, '/');
+    expect(await page.evaluate(() => window.halfedgeLab.practice.list())).toContain('loop-subdivision');
+    await page.evaluate(() => window.halfedgeLab.practice.load('split-edge'));
+    await page.evaluate((code) => window.halfedgeLab.practice.setCode(code), solution('wrong/split-forgets-face'));
+    const result = await page.evaluate(() => window.halfedgeLab.practice.run());
+    expect(result.passed).toBe(false);
+    expect(result.firstBroken).toMatchObject({ line: 30 });
+    expect(result.writes[result.firstBroken!.write]).toMatchObject({ field: 'newFace', line: 30 });
+    expect(result.checks.find((c) => !c.passed)!.message).toMatch(/halfedge h-1 is not a live halfedge/);
+    // the code is kept per exercise, across a reload
+    await page.reload();
+    await page.waitForFunction(() => window.halfedgeLab !== undefined);
+    await page.evaluate(() => window.halfedgeLab.practice.load('split-edge'));
+    expect(await page.evaluate(async () => (await window.halfedgeLab.practice.state()).code)).toContain('never gives them a halfedge');
+  });
+});

@@ -1,0 +1,374 @@
+/**
+ * The Practice tab: the student picks an exercise, writes the function in the editor, and runs it
+ * in the sandbox on every fixture. The panel lists each check, the first invariant the code broke
+ * (with its write and line), and every write it made, each of which can be shown in the view.
+ * Code and progress are kept in the browser per exercise; "Export" saves all solutions as one file.
+ */
+import type { HalfedgeMesh } from '../../core/index.js';
+// module by module: the index would bring the solution parser, which only the sandbox needs
+import type { Exercise } from '../../core/practice/exercise.js';
+import { exercises } from '../../core/practice/exercises.js';
+import type { FirstBroken } from '../../core/practice/grade.js';
+import { type GradeReport, gradeSolution } from '../../core/practice/grade-solution.js';
+import { whyNotDrawable } from '../../core/practice/drawable.js';
+import { PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
+import { SolutionError } from '../../core/practice/solution-error.js';
+import { applyWrite, describeWrite, type PracticeWrite } from '../../core/practice/writes.js';
+import { el, replace } from '../dom.js';
+import { fixtureFiles } from '../practice-link.js';
+import { browserRunner } from '../practice-sandbox.js';
+import type { PracticeEditor } from '../practice-editor.js';
+
+export interface PracticeActions {
+  /** Shows a state of a run in the view, with `write` (the one that led to it) drawn as the pointer diff; `frame` points the camera at it. */
+  showState(mesh: HalfedgeMesh, label: string, write: PracticeWrite | null, frame: boolean): Promise<void>;
+  /** Selects an element in the view (a culprit of the first broken invariant). */
+  select(kind: 'halfedge' | 'vertex' | 'face', id: number): void;
+  say(message: string, role?: 'status' | 'alert'): void;
+}
+
+/** What `run()` reports, as `window.halfedgeLab.practice.run()` gives it. */
+export interface PracticeRunResult {
+  passed: boolean;
+  checks: { name: string; passed: boolean; message: string }[];
+  /** The writes on the fixture shown (the first that failed, else the first). */
+  writes: PracticeWrite[];
+  firstBroken: FirstBroken | null;
+  fixtures: { name: string; writes: PracticeWrite[]; firstBroken: FirstBroken | null }[];
+  /** Why the code could not run at all (a syntax error, no default export), with its line. */
+  error: { message: string; line: number | null } | null;
+}
+
+/** Writes listed in the panel (all of them can still be stepped through with the buttons). */
+const WRITES_LISTED = 400;
+
+const storageKey = (id: string) => `halfedge-lab.practice.${id}`;
+
+interface Saved {
+  code: string;
+  passed: boolean;
+}
+
+export class PracticePanel {
+  readonly exercises: Exercise[] = [...exercises];
+  exercise: Exercise = exercises[0];
+  code = '';
+  running = false;
+  report: GradeReport | null = null;
+  /**
+   * The fixture and the number of its writes asked to be shown, and the number really shown:
+   * fewer when the state asked for cannot be drawn (a pointer half-way rewired: `why`).
+   */
+  shown: { fixture: number; write: number; drawn: number; why: string | null } | null = null;
+  private hintsShown = 0;
+  /** The fixture run the camera was last pointed at. */
+  private framed: unknown = null;
+  private editor: PracticeEditor | null = null;
+  private editorLoading: Promise<void> | null = null;
+  private readonly select = el('select', { 'aria-label': 'Exercise', onchange: () => this.load(this.select.value) });
+  private readonly task = el('div', { class: 'practice-task' });
+  private readonly hints = el('ol', { class: 'practice-hints' });
+  private readonly hintButton = el('button', { type: 'button', onclick: () => this.showHint() }, 'Hint');
+  private readonly editorHost = el('div', { class: 'practice-editor' });
+  private readonly runButton = el('button', { type: 'button', class: 'primary', 'aria-label': 'Run the solution', 'aria-keyshortcuts': 'Control+Enter', title: 'Run on every fixture (Ctrl+Enter)', onclick: () => void this.run() }, 'Run');
+  private readonly summary = el('p', { class: 'practice-summary', role: 'status', 'aria-live': 'polite' });
+  private readonly checks = el('ul', { class: 'practice-checks' });
+  private readonly broken = el('div', { class: 'practice-broken' });
+  private readonly writes = el('div', { class: 'practice-writes' });
+
+  constructor(
+    container: HTMLElement,
+    private readonly actions: PracticeActions,
+  ) {
+    replace(
+      container,
+      el('label', { class: 'practice-pick' }, 'Exercise ', this.select),
+      this.task,
+      el('div', { class: 'practice-hint-row' }, this.hintButton),
+      this.hints,
+      this.editorHost,
+      el(
+        'div',
+        { class: 'practice-buttons' },
+        this.runButton,
+        el('button', { type: 'button', 'aria-label': 'Start again from the starter code', onclick: () => this.setCode(this.exercise.starter) }, 'Starter code'),
+        el('button', { type: 'button', 'aria-label': 'Export all solutions as one file', onclick: () => this.exportSolutions() }, 'Export'),
+      ),
+      this.summary,
+      this.checks,
+      this.broken,
+      this.writes,
+    );
+    this.editorHost.addEventListener('keydown', (event) => {
+      if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) {
+        event.preventDefault();
+        void this.run();
+      }
+    });
+    this.load(this.exercise.id);
+  }
+
+  /** Adds an exercise (an instructor's, from a URL) and opens it. */
+  add(exercise: Exercise): void {
+    const at = this.exercises.findIndex((e) => e.id === exercise.id);
+    if (at >= 0) this.exercises[at] = exercise;
+    else this.exercises.push(exercise);
+    this.load(exercise.id);
+  }
+
+  load(id: string): void {
+    const exercise = this.exercises.find((e) => e.id === id);
+    if (!exercise) throw new Error(`there is no exercise '${id}' (there are ${this.exercises.map((e) => e.id).join(', ')})`);
+    this.exercise = exercise;
+    this.report = null;
+    this.shown = null;
+    this.hintsShown = 0;
+    this.code = saved(id)?.code ?? exercise.starter;
+    this.editor?.setText(this.code);
+    this.drawList();
+    replace(this.task, el('h3', {}, exercise.title), ...exercise.task.map((p) => el('p', {}, p)));
+    replace(this.hints);
+    this.drawHintButton();
+    this.summary.textContent = '';
+    replace(this.checks);
+    replace(this.broken);
+    replace(this.writes);
+  }
+
+  /** Loads the editor (once), when the tab is first opened. */
+  open(): Promise<void> {
+    this.editorLoading ??= import('../practice-editor.js').then(({ createEditor }) => {
+      this.editor = createEditor(this.editorHost, this.code, (text) => this.remember(text), PRACTICE_API_NAMES);
+    });
+    return this.editorLoading;
+  }
+
+  setCode(text: string): void {
+    this.remember(text);
+    this.editor?.setText(text);
+  }
+
+  async run(): Promise<PracticeRunResult> {
+    if (this.running) throw new Error('a run is under way');
+    this.running = true;
+    this.runButton.disabled = true;
+    this.summary.textContent = `Running on ${this.exercise.fixtures.length} fixtures…`;
+    try {
+      const report = await gradeSolution(this.exercise, this.code, browserRunner, fixtureFiles);
+      this.report = report;
+      const passedCount = report.checks.filter((c) => c.passed).length;
+      this.summary.textContent = report.passed ? `All ${report.checks.length} checks pass.` : `${passedCount} of ${report.checks.length} checks pass.`;
+      store(this.exercise.id, { code: this.code, passed: report.passed || (saved(this.exercise.id)?.passed ?? false) });
+      this.drawList();
+      this.drawChecks(report);
+      const shown = Math.max(0, report.fixtures.findIndex((f) => f.checks.some((c) => !c.passed)));
+      const fixture = report.fixtures[shown];
+      this.drawBroken(fixture.firstBroken, shown);
+      this.drawWrites(shown);
+      if (this.exercise.kind === 'edit') {
+        // the result, with a culprit of the first broken invariant selected
+        await this.show(shown, fixture.writes.length);
+        const culprit = fixture.firstBroken ? firstCulprit(fixture.firstBroken) : null;
+        if (culprit && this.shown?.drawn === fixture.writes.length) this.actions.select(culprit.kind, culprit.id);
+      }
+      return resultOf(report, shown, null);
+    } catch (error) {
+      if (!(error instanceof SolutionError)) throw error;
+      this.summary.textContent = `The code cannot run: ${error.message}`;
+      replace(this.checks);
+      replace(this.broken, lineButton(error.line, (line) => this.goToLine(line)));
+      replace(this.writes);
+      return { passed: false, checks: [], writes: [], firstBroken: null, fixtures: [], error: { message: error.message, line: error.line } };
+    } finally {
+      this.running = false;
+      this.runButton.disabled = false;
+    }
+  }
+
+  /** Shows fixture `fixture` after its first `count` writes in the view. */
+  async show(fixture: number, count: number): Promise<void> {
+    const result = this.report?.fixtures[fixture];
+    if (!result) return;
+    const write = Math.max(0, Math.min(count, result.writes.length));
+    // replay up to the state asked for, remembering the last one that can be drawn
+    const mesh = result.before.clone();
+    let drawn = whyNotDrawable(mesh) ? -1 : 0;
+    for (let i = 0; i < write; i++) {
+      applyWrite(mesh, result.writes[i]);
+      if (!whyNotDrawable(mesh)) drawn = i + 1;
+    }
+    const why = whyNotDrawable(mesh);
+    const frame = this.shown?.fixture !== fixture || this.framed !== result;
+    this.framed = result;
+    this.shown = { fixture, write, drawn: Math.max(0, drawn), why };
+    let state = mesh;
+    if (drawn !== write) {
+      state = result.before.clone();
+      for (let i = 0; i < drawn; i++) applyWrite(state, result.writes[i]);
+    }
+    const label = `practice: ${this.exercise.title}, ${result.fixture}${drawn <= 0 ? '' : `, after write ${drawn}`}`;
+    await this.actions.showState(state, label, drawn > 0 ? result.writes[drawn - 1] : null, frame);
+    this.drawWrites(fixture);
+  }
+
+  state() {
+    return {
+      exercise: this.exercise.id,
+      code: this.code,
+      running: this.running,
+      passed: this.report?.passed ?? null,
+      shown: this.shown,
+      progress: Object.fromEntries(this.exercises.map((e) => [e.id, saved(e.id)?.passed ?? false])),
+    };
+  }
+
+  goToLine(line: number): void {
+    void this.open().then(() => {
+      this.editor?.goToLine(line);
+      this.editor?.focus();
+    });
+  }
+
+  private remember(text: string): void {
+    this.code = text;
+    store(this.exercise.id, { code: text, passed: saved(this.exercise.id)?.passed ?? false });
+  }
+
+  private showHint(): void {
+    const hint = this.exercise.hints[this.hintsShown];
+    if (hint === undefined) return;
+    this.hints.append(el('li', {}, hint));
+    this.hintsShown++;
+    this.drawHintButton();
+  }
+
+  private drawHintButton(): void {
+    const left = this.exercise.hints.length - this.hintsShown;
+    this.hintButton.textContent = left > 0 ? `Show a hint (${left} left)` : 'No more hints';
+    this.hintButton.disabled = left === 0;
+  }
+
+  private drawList(): void {
+    replace(
+      this.select,
+      ...this.exercises.map((e, i) => el('option', { value: e.id, selected: e.id === this.exercise.id }, `${i + 1}. ${e.title}${saved(e.id)?.passed ? ' ✓' : ''}`)),
+    );
+    this.select.value = this.exercise.id;
+  }
+
+  /** The failed checks, each with its reason; the passed ones folded under one line. */
+  private drawChecks(report: GradeReport): void {
+    const item = (check: GradeReport['checks'][number]) =>
+      el('li', { class: check.passed ? 'pass' : 'fail' }, el('span', { class: 'mark', 'aria-hidden': 'true' }, check.passed ? '✓' : '✗'), ' ', el('strong', {}, check.name), check.passed ? '' : el('span', { class: 'why' }, check.message));
+    const passed = report.checks.filter((c) => c.passed);
+    replace(
+      this.checks,
+      ...report.checks.filter((c) => !c.passed).map(item),
+      passed.length === 0 ? null : el('li', {}, el('details', { open: passed.length === report.checks.length }, el('summary', {}, `${passed.length} passed`), el('ul', { class: 'practice-checks' }, ...passed.map(item)))),
+    );
+  }
+
+  private drawBroken(first: FirstBroken | null, fixture: number): void {
+    if (!first) return replace(this.broken);
+    const result = this.report!.fixtures[fixture];
+    replace(
+      this.broken,
+      el('p', {}, `First broken: ${first.invariant}. It broke at write ${first.write + 1}, ${describeWrite(result.writes[first.write])}`, first.line === null ? '.' : ', ', lineButton(first.line, (line) => this.goToLine(line))),
+    );
+  }
+
+  private drawWrites(fixture: number): void {
+    const result = this.report?.fixtures[fixture];
+    if (!result || this.exercise.kind === 'query') return replace(this.writes);
+    const shown = this.shown?.fixture === fixture ? this.shown : null;
+    const at = shown ? shown.write : -1;
+    const pick = el('select', { 'aria-label': 'Fixture whose writes are listed', onchange: () => void this.show(Number(pick.value), this.report!.fixtures[Number(pick.value)].writes.length) },
+      ...this.report!.fixtures.map((f, i) => el('option', { value: i, selected: i === fixture }, f.fixture)));
+    const step = (delta: number) => void this.show(fixture, (at < 0 ? 0 : at) + delta);
+    replace(
+      this.writes,
+      el('h3', {}, `Writes (${result.writes.length})`),
+      el('label', {}, 'On ', pick),
+      el(
+        'div',
+        { class: 'practice-buttons' },
+        el('button', { type: 'button', 'aria-label': 'Show the fixture before any write', onclick: () => void this.show(fixture, 0) }, 'Before'),
+        el('button', { type: 'button', 'aria-label': 'Show the previous write', disabled: at <= 0, onclick: () => step(-1) }, 'Previous write'),
+        el('button', { type: 'button', 'aria-label': 'Show the next write', disabled: at >= result.writes.length, onclick: () => step(1) }, 'Next write'),
+        el('button', { type: 'button', 'aria-label': 'Show the result after every write', onclick: () => void this.show(fixture, result.writes.length) }, 'After'),
+      ),
+      el('p', { class: 'note', role: 'status' }, shownText(shown, result.writes.length)),
+      el(
+        'ol',
+        { class: 'practice-write-list' },
+        ...result.writes.slice(0, WRITES_LISTED).map((write, i) =>
+          el(
+            'li',
+            { class: [i + 1 === at ? 'current' : '', result.firstBroken?.write === i ? 'culprit' : ''].join(' ').trim() || undefined },
+            el('button', { type: 'button', onclick: () => void this.show(fixture, i + 1) }, describeWrite(write)),
+            write.line === null ? '' : el('span', { class: 'line' }, ` line ${write.line}`),
+          ),
+        ),
+      ),
+      result.writes.length > WRITES_LISTED ? el('p', { class: 'note' }, `The first ${WRITES_LISTED} are listed; step with the buttons to see the rest.`) : null,
+    );
+    this.writes.querySelector('li.current')?.scrollIntoView({ block: 'nearest' });
+  }
+
+  private exportSolutions(): void {
+    const solutions = Object.fromEntries(this.exercises.map((e) => [e.id, saved(e.id)?.code ?? null]).filter(([, code]) => code !== null));
+    const blob = new Blob([JSON.stringify({ format: 'halfedge-lab practice solutions', solutions }, null, 2)], { type: 'application/json' });
+    const link = el('a', { href: URL.createObjectURL(blob), download: 'halfedge-lab-solutions.json' });
+    link.click();
+    setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+    this.actions.say(`Exported ${Object.keys(solutions).length} solutions.`);
+  }
+}
+
+function firstCulprit({ elements }: FirstBroken): { kind: 'halfedge' | 'vertex' | 'face'; id: number } | null {
+  if (elements.vertices.length) return { kind: 'vertex', id: elements.vertices[0] };
+  if (elements.halfedges.length) return { kind: 'halfedge', id: elements.halfedges[0] };
+  if (elements.faces.length) return { kind: 'face', id: elements.faces[0] };
+  return null;
+}
+
+function shownText(shown: PracticePanel['shown'], total: number): string {
+  if (!shown) return '';
+  const after = (n: number) => (n === 0 ? 'the fixture before any write' : `the mesh after write ${n} of ${total}`);
+  if (shown.drawn === shown.write) return `The view shows ${after(shown.write)}.`;
+  return `After write ${shown.write} the pointers are half-way rewired (${shown.why}), which cannot be drawn: the view shows ${after(shown.drawn)}, the last state that can.`;
+}
+
+function resultOf(report: GradeReport, shown: number, error: PracticeRunResult['error']): PracticeRunResult {
+  const fixture = report.fixtures[shown];
+  return {
+    passed: report.passed,
+    checks: report.checks.map(({ name, passed, message }) => ({ name, passed, message })),
+    writes: fixture.writes,
+    firstBroken: fixture.firstBroken,
+    fixtures: report.fixtures.map((f) => ({ name: f.fixture, writes: f.writes, firstBroken: f.firstBroken })),
+    error,
+  };
+}
+
+function lineButton(line: number | null, go: (line: number) => void): HTMLElement | string {
+  return line === null ? '' : el('button', { type: 'button', class: 'link', 'aria-label': `Go to line ${line} in the editor`, onclick: () => go(line) }, `line ${line}`);
+}
+
+function saved(id: string): Saved | null {
+  try {
+    const text = localStorage.getItem(storageKey(id));
+    const value = text ? (JSON.parse(text) as Saved) : null;
+    return value && typeof value.code === 'string' ? value : null;
+  } catch {
+    return null;
+  }
+}
+
+function store(id: string, value: Saved): void {
+  try {
+    localStorage.setItem(storageKey(id), JSON.stringify(value));
+  } catch {
+    // storage full or refused (a private window): the code stays in the editor
+  }
+}
