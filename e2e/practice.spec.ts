@@ -19,6 +19,11 @@ test.describe('practice mode', () => {
     await expect(page.locator('#tab-practice')).toHaveAttribute('aria-selected', 'true');
     await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
     await expect(page.locator('.practice-task h3')).toHaveText('Flip an edge');
+    // the view shows the mesh the exercise is about before any code has run
+    await expect(page.locator('#status')).toHaveText('Practice: Flip an edge, an edge inside a disk, input 10.');
+    const history = await page.evaluate(() => window.halfedgeLab.state().history!);
+    expect(history.items[history.index].label).toBe('practice: Flip an edge, an edge inside a disk, input 10');
+    expect(history.items[history.index - 1].source.kind).toBe('open'); // undo goes back to the mesh the page had
 
     await typeAndRun(page, solution('flip-edge'));
     await expect(page.locator('.practice-summary')).toHaveText('All 10 checks pass.', { timeout: 15_000 });

@@ -6,7 +6,7 @@
  */
 import type { HalfedgeMesh } from '../../core/index.js';
 // module by module: the index would bring the solution parser, which only the sandbox needs
-import type { Exercise } from '../../core/practice/exercise.js';
+import { type Exercise, fixtureMesh } from '../../core/practice/exercise.js';
 import { exercises } from '../../core/practice/exercises.js';
 import type { FirstBroken } from '../../core/practice/grade.js';
 import { type GradeReport, gradeSolution } from '../../core/practice/grade-solution.js';
@@ -126,6 +126,7 @@ export class PracticePanel {
     this.code = saved(id)?.code ?? exercise.starter;
     this.editor?.setText(this.code);
     this.drawList();
+    if (this.editor) void this.showFirstFixture();
     replace(this.task, el('h3', {}, exercise.title), ...exercise.task.map((p) => el('p', {}, p)));
     replace(this.hints);
     this.drawHintButton();
@@ -135,12 +136,21 @@ export class PracticePanel {
     replace(this.writes);
   }
 
-  /** Loads the editor (once), when the tab is first opened. */
+  /** Loads the editor (once) and shows the exercise's first fixture, when the tab is opened. */
   open(): Promise<void> {
     this.editorLoading ??= import('../practice-editor.js').then(({ createEditor }) => {
       this.editor = createEditor(this.editorHost, this.code, (text) => this.remember(text), PRACTICE_API_NAMES);
     });
+    if (!this.report && this.framed !== this.exercise) void this.showFirstFixture();
     return this.editorLoading;
+  }
+
+  /** The mesh the exercise is about, before the student's code has run. */
+  private async showFirstFixture(): Promise<void> {
+    const fixture = this.exercise.fixtures[0];
+    this.framed = this.exercise;
+    const input = fixture.input === undefined ? '' : `, input ${fixture.input}`;
+    await this.actions.showState(fixtureMesh(fixture, fixtureFiles), `practice: ${this.exercise.title}, ${fixture.name}${input}`, null, true);
   }
 
   setCode(text: string): void {
