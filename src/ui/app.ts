@@ -12,10 +12,8 @@ import {
   meshToHalfedgeJSON,
   type Repair,
   type RepairIncident,
-  serializeMesh,
   vertexAdjacentFaces,
 } from '../core/index.js';
-import { pointerChangeOf } from '../core/practice/writes.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
@@ -188,10 +186,9 @@ export class App {
     this.practicePanel ??= import('./panels/practice.js').then(
       ({ PracticePanel }) =>
         new PracticePanel(byId('practice'), {
-      showState: async (mesh, label, write, frame) => {
-        const change = write ? pointerChangeOf(write) : null;
+      showState: async (mesh, label, diff, frame) => {
         try {
-          this.show(await this.client.practice(serializeMesh(mesh), label, change ? { changes: [change], total: 1 } : null), frame);
+          this.show(await this.client.practice(mesh, label, diff), frame);
           this.say(`${label[0].toUpperCase()}${label.slice(1)}.`);
         } catch (error) {
           this.say((error as Error).message, 'alert');

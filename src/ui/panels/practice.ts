@@ -4,7 +4,7 @@
  * (with its write and line), and every write it made, each of which can be shown in the view.
  * Code and progress are kept in the browser per exercise; "Export" saves all solutions as one file.
  */
-import type { HalfedgeMesh } from '../../core/index.js';
+import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, serializeMesh } from '../../core/index.js';
 // module by module: the index would bring the solution parser, which only the sandbox needs
 import { type Exercise, fixtureMesh } from '../../core/practice/exercise.js';
 import { exercises } from '../../core/practice/exercises.js';
@@ -13,15 +13,15 @@ import { type GradeReport, gradeSolution } from '../../core/practice/grade-solut
 import { whyNotDrawable } from '../../core/practice/drawable.js';
 import { PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
 import { SolutionError } from '../../core/practice/solution-error.js';
-import { applyWrite, describeWrite, type PracticeWrite } from '../../core/practice/writes.js';
+import { applyWrite, describeWrite, pointerChangeOf, type PracticeWrite } from '../../core/practice/writes.js';
 import { el, replace } from '../dom.js';
 import { fixtureFiles } from '../practice-link.js';
 import { browserRunner } from '../practice-sandbox.js';
 import type { PracticeEditor } from '../practice-editor.js';
 
 export interface PracticeActions {
-  /** Shows a state of a run in the view, with `write` (the one that led to it) drawn as the pointer diff; `frame` points the camera at it. */
-  showState(mesh: HalfedgeMesh, label: string, write: PracticeWrite | null, frame: boolean): Promise<void>;
+  /** Shows a state of a run in the view, with the write that led to it as the pointer diff; `frame` points the camera at it. */
+  showState(mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean): Promise<void>;
   /** Selects an element in the view (a culprit of the first broken invariant). */
   select(kind: 'halfedge' | 'vertex' | 'face', id: number): void;
   say(message: string, role?: 'status' | 'alert'): void;
@@ -150,7 +150,7 @@ export class PracticePanel {
     const fixture = this.exercise.fixtures[0];
     this.framed = this.exercise;
     const input = fixture.input === undefined ? '' : `, input ${fixture.input}`;
-    await this.actions.showState(fixtureMesh(fixture, fixtureFiles), `practice: ${this.exercise.title}, ${fixture.name}${input}`, null, true);
+    await this.actions.showState(serializeMesh(fixtureMesh(fixture, fixtureFiles)), `practice: ${this.exercise.title}, ${fixture.name}${input}`, null, true);
   }
 
   setCode(text: string): void {
@@ -217,7 +217,8 @@ export class PracticePanel {
       for (let i = 0; i < drawn; i++) applyWrite(state, result.writes[i]);
     }
     const label = `practice: ${this.exercise.title}, ${result.fixture}${drawn <= 0 ? '' : `, after write ${drawn}`}`;
-    await this.actions.showState(state, label, drawn > 0 ? result.writes[drawn - 1] : null, frame);
+    const change = drawn > 0 ? pointerChangeOf(result.writes[drawn - 1]) : null;
+    await this.actions.showState(serializeMesh(state), label, change ? { changes: [change], total: 1 } : null, frame);
     this.drawWrites(fixture);
   }
 
