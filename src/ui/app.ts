@@ -9,6 +9,8 @@ import {
   faceVectorArea,
   faceVertices,
   type HalfedgeMesh,
+  type PointerDiff,
+  type SerializedMesh,
   meshToHalfedgeJSON,
   type Repair,
   type RepairIncident,
@@ -183,10 +185,8 @@ export class App {
 
   /** The Practice tab's panel, its code loaded on first use: the page's first load does without it. */
   practice(): Promise<PracticePanel> {
-    this.practicePanel ??= import('./panels/practice.js').then(
-      ({ PracticePanel }) =>
-        new PracticePanel(byId('practice'), {
-      showState: async (mesh, label, diff, frame) => {
+    const actions = {
+      showState: async (mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean) => {
         try {
           this.show(await this.client.practice(mesh, label, diff), frame);
           this.say(`${label[0].toUpperCase()}${label.slice(1)}.`);
@@ -194,10 +194,10 @@ export class App {
           this.say((error as Error).message, 'alert');
         }
       },
-      select: (kind, id) => this.select({ kind, id }),
-      say: (message, role) => this.say(message, role),
-        }),
-    );
+      select: (kind: 'halfedge' | 'vertex' | 'face', id: number) => this.select({ kind, id }),
+      say: (message: string, role?: 'status' | 'alert') => this.say(message, role),
+    };
+    this.practicePanel ??= import('./panels/practice.js').then(({ PracticePanel }) => new PracticePanel(byId('practice'), actions));
     return this.practicePanel;
   }
 

@@ -10,7 +10,7 @@
  * There is no DOM in a worker: `document` is simply not defined.
  */
 import { deserializeMesh, type SerializedMesh } from '../core/index.js';
-import { type PracticeBudget, runSolution, type RunOutput, type Solution, SolutionError, solutionBody, solutionLine } from '../core/practice/index.js';
+import { type PracticeBudget, runSolution, type RunOutput, type Solution, SOLUTION_FILE, SolutionError, solutionBody, solutionLine } from '../core/practice/index.js';
 
 export interface SandboxRequest {
   source: string;
@@ -61,7 +61,7 @@ export function lockDown(): void {
 /** Lines the engine puts before a compiled body, measured once (2 in V8: `function anonymous(` and `) {`). */
 const lineOffset = (() => {
   try {
-    compile(`throw new Error();\n//# sourceURL=solution.js`)();
+    compile(`throw new Error();\n//# sourceURL=${SOLUTION_FILE}`)();
   } catch (error) {
     return (solutionLine((error as Error).stack, 0) ?? 1) - 1;
   }

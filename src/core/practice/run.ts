@@ -4,7 +4,7 @@
  * halfedges read, the error), which the grader checks outside the sandbox.
  */
 import type { HalfedgeMesh } from '../mesh.js';
-import { BudgetError, DEFAULT_BUDGET, type PracticeBudget, type PracticeMesh, practiceMesh, type PracticeTrace } from './mesh-api.js';
+import { DEFAULT_BUDGET, type PracticeBudget, type PracticeMesh, practiceMesh, type PracticeTrace } from './mesh-api.js';
 import { solutionLine } from './source.js';
 
 export type Solution = (mesh: PracticeMesh, input: number | undefined) => unknown;
@@ -40,8 +40,7 @@ export function runSolution(solution: Solution, mesh: HalfedgeMesh, input: numbe
 
 function runError(error: unknown, lineOffset: number): RunError {
   if (error instanceof Error) {
-    const name = error instanceof BudgetError ? 'BudgetError' : error.name;
-    return { name, message: error.message, line: solutionLine(error.stack, lineOffset) };
+    return { name: error.name, message: error.message, line: solutionLine(error.stack, lineOffset) };
   }
   return { name: 'Error', message: `your code threw ${String(error)}`, line: null };
 }

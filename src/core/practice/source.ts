@@ -12,6 +12,9 @@ import { SolutionError } from './solution-error.js';
 /** The file name the engine gives the solution's frames (`//# sourceURL`), so stacks name its lines. */
 export const SOLUTION_FILE = 'solution.js';
 
+/** A stack frame of the solution: its line and column. */
+const SOLUTION_FRAME = new RegExp(`${SOLUTION_FILE.replace('.', '\\.')}:(\\d+):\\d+`);
+
 /** The variable the default export is assigned to in the compiled body. */
 const DEFAULT_EXPORT = '__solution';
 
@@ -69,6 +72,6 @@ function findImport(node: unknown): Node | null {
  */
 export function solutionLine(stack: string | undefined, offset: number): number | null {
   if (!stack) return null;
-  const match = /solution\.js:(\d+):\d+/.exec(stack);
+  const match = SOLUTION_FRAME.exec(stack);
   return match ? Number(match[1]) - offset : null;
 }

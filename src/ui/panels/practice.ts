@@ -181,7 +181,7 @@ export class PracticePanel {
         const culprit = fixture.firstBroken ? firstCulprit(fixture.firstBroken) : null;
         if (culprit && this.shown?.drawn === fixture.writes.length) this.actions.select(culprit.kind, culprit.id);
       }
-      return resultOf(report, shown, null);
+      return resultOf(report, shown);
     } catch (error) {
       if (!(error instanceof SolutionError)) throw error;
       this.summary.textContent = `The code cannot run: ${error.message}`;
@@ -350,7 +350,7 @@ function shownText(shown: PracticePanel['shown'], total: number): string {
   return `After write ${shown.write} the pointers are half-way rewired (${shown.why}), which cannot be drawn: the view shows ${after(shown.drawn)}, the last state that can.`;
 }
 
-function resultOf(report: GradeReport, shown: number, error: PracticeRunResult['error']): PracticeRunResult {
+function resultOf(report: GradeReport, shown: number): PracticeRunResult {
   const fixture = report.fixtures[shown];
   return {
     passed: report.passed,
@@ -358,7 +358,7 @@ function resultOf(report: GradeReport, shown: number, error: PracticeRunResult['
     writes: fixture.writes,
     firstBroken: fixture.firstBroken,
     fixtures: report.fixtures.map((f) => ({ name: f.fixture, writes: f.writes, firstBroken: f.firstBroken })),
-    error,
+    error: null,
   };
 }
 
