@@ -46,6 +46,17 @@ test.describe('practice mode', () => {
     await expect(page.locator('.practice-writes .note')).toHaveText('The view shows the fixture before any write.');
     await page.locator('.practice-write-list li').nth(0).getByRole('button').click();
     await expect(page.locator('.practice-writes .note')).toContainText('After write 1 the pointers are half-way rewired');
+    // a state that cannot be drawn: the last one that can, with the writes since marked on it
+    await expect(page.locator('#status')).toHaveText(/, write 1 marked\.$/);
+    const firstWrite = await page.locator('.practice-write-list li').nth(0).getByRole('button').textContent();
+    expect(firstWrite).toMatch(/^next\(h\d+\) = h\d+$/);
+    await expect(page.locator('#viewport .label', { hasText: firstWrite! })).toBeVisible();
+    // stepping keeps the keyboard on the button pressed
+    await page.getByRole('button', { name: 'Show the next write' }).focus();
+    await page.keyboard.press('Enter');
+    await expect(page.locator('.practice-writes .note')).toContainText('After write 2 the pointers');
+    await expect(page.locator('#status')).toHaveText(/, writes 1–2 marked\.$/);
+    expect(await page.evaluate(() => document.activeElement?.getAttribute('aria-label'))).toBe('Show the next write');
     expect(appErrors(page)).toEqual([]);
   });
 
@@ -68,8 +79,21 @@ test.describe('practice mode', () => {
     expect(await frames).toBeGreaterThan(20);
     await expect(page.locator('.practice-checks')).toContainText('your code ran for 2.5 s without returning');
 
+    // a query's reads are walked in the view, one halfedge after another
+    await typeAndRun(page, solution('vertex-degree'));
+    await expect(page.locator('.practice-summary')).toHaveText('All 4 checks pass.', { timeout: 10_000 });
+    const read = (await page.evaluate(async () => (await window.halfedgeLab.practice.state()).read))!;
+    expect(read.total).toBeGreaterThan(2);
+    expect(read.step).toBe(read.total - 1);
+    await expect(page.locator('#viewport .label', { hasText: `read ${read.total}: h` })).toBeVisible();
+    await page.evaluate(() => window.halfedgeLab.practice.showRead(0, 0));
+    await expect(page.locator('#viewport .label', { hasText: /^read 1: h\d+$/ })).toBeVisible();
+    await page.getByRole('button', { name: 'Play the reads' }).click();
+    await expect.poll(async () => (await page.evaluate(async () => (await window.halfedgeLab.practice.state()).read))!.step, { timeout: 10_000 }).toBe(read.total - 1);
+    await expect(page.getByRole('button', { name: 'Play the reads' })).toHaveAttribute('aria-pressed', 'false');
+
     await typeAndRun(page, 'export default function (mesh, v) {\n  const h = mesh.vertexHalfedge(v);\n  return h.length.value;\n}\n');
-    await expect(page.locator('.practice-checks')).toContainText('your code threw TypeError at line 3', { timeout: 10_000 });
+    await expect(page.locator('.practice-checks').first()).toContainText('your code threw TypeError at line 3', { timeout: 10_000 });
     await typeAndRun(page, 'export default function (mesh, v) {\n  return document.title;\n}\n');
     await expect(page.locator('.practice-checks')).toContainText('your code threw ReferenceError at line 2: document is not defined', { timeout: 10_000 });
     await typeAndRun(page, 'export default function (mesh, v) {\n  fetch("/models/index.json");\n  return 3;\n}\n');

@@ -113,6 +113,8 @@ export class App {
   private quizSpec: HighlightSpec | null = null;
   /** A repair from the build report being shown (cleared by the next selection). */
   private problemSpec: HighlightSpec | null = null;
+  /** What the Practice tab marks on the state of a run it shows (the last writes, or the reads so far). */
+  private practiceSpec: HighlightSpec | null = null;
   private traversalSpec: HighlightSpec | null = null;
   private markReady!: () => void;
 
@@ -186,15 +188,25 @@ export class App {
   /** The Practice tab's panel, its code loaded on first use: the page's first load does without it. */
   practice(): Promise<PracticePanel> {
     const actions = {
-      showState: async (mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean) => {
+      showState: async (mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean, marks: HighlightSpec | null) => {
         try {
           this.show(await this.client.practice(mesh, label, diff), frame);
+          this.practiceSpec = marks;
+          this.drawSelection();
           this.say(`${label[0].toUpperCase()}${label.slice(1)}.`);
         } catch (error) {
           this.say((error as Error).message, 'alert');
         }
       },
-      select: (kind: 'halfedge' | 'vertex' | 'face', id: number) => this.select({ kind, id }),
+      select: (selection: Selection | null) => this.select(selection),
+      mark: (marks: HighlightSpec | null) => {
+        // only on the state the panel showed: after an undo or an opened file the ids mean other elements
+        const history = this.snapshot?.history;
+        if (history?.items[history.index]?.source.kind !== 'practice') return false;
+        this.practiceSpec = marks;
+        this.drawSelection();
+        return true;
+      },
       say: (message: string, role?: 'status' | 'alert') => this.say(message, role),
     };
     this.practicePanel ??= import('./panels/practice.js').then(({ PracticePanel }) => new PracticePanel(byId('practice'), actions));
@@ -339,6 +351,7 @@ export class App {
     if (this.hovered && !exists(mesh, this.hovered)) this.hovered = null;
     this.path = this.path.filter((step) => exists(mesh, step.to));
     this.problemSpec = null;
+    this.practiceSpec = null;
     if (frame) {
       this.selection = null;
       this.path = [];
@@ -684,7 +697,8 @@ export class App {
     const mesh = this.mesh;
     if (!mesh) return;
     const selected = this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight();
-    const spec = this.quizSpec ?? this.traversalSpec ?? (this.problemSpec ? combineHighlights(selected, this.problemSpec) : selected);
+    const marks = [this.problemSpec, this.practiceSpec].filter((spec) => spec !== null);
+    const spec = this.quizSpec ?? this.traversalSpec ?? marks.reduce(combineHighlights, selected);
     this.selectionLayer.show(mesh, spec, this.scale);
     const phase = this.snapshot?.phase;
     if (phase && this.snapshot?.stepping) this.phaseLayer.show(mesh, phaseHighlight(mesh, phase), this.scale);

@@ -93,7 +93,8 @@ export function automation(app: App) {
      * Practice mode (see docs/practice.md): `load(id)` opens an exercise in the Practice tab,
      * `setCode(text)` puts a solution in the editor, `run()` runs it on every fixture and resolves
      * to `{ passed, checks, writes, firstBroken, fixtures, error }`; `show(fixture, n)` shows a
-     * fixture after its first n writes; `state()` is what the panel shows.
+     * fixture after its first n writes, `showRead(fixture, n)` a query's fixture with its reads up
+     * to read n marked; `state()` is what the panel shows.
      */
     practice: {
       list: async () => (await app.practice()).exercises.map((e) => e.id),
@@ -110,6 +111,7 @@ export function automation(app: App) {
       },
       run: async () => (await app.practice()).run(),
       show: async (fixture: number, writes: number) => (await app.practice()).show(fixture, writes),
+      showRead: async (fixture: number, read: number) => (await app.practice()).showRead(fixture, read),
       state: async () => (await app.practice()).state(),
     },
     /** The session's fingerprint of its mesh and the page's of its own copy (`meshFingerprint`): equal when every patch landed right. */

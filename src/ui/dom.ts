@@ -39,3 +39,14 @@ export function byId<T extends HTMLElement = HTMLElement>(id: string): T {
   if (!element) throw new Error(`the page has no #${id}`);
   return element as T;
 }
+
+/**
+ * `replace`, keeping the keyboard focus on the control of the same accessible name: a panel that
+ * redraws itself under a pressed key (Next, Previous) stays in the keyboard's hands.
+ */
+export function replaceKeepingFocus(parent: Element, ...children: Child[]): void {
+  const focused = document.activeElement;
+  const name = focused instanceof HTMLElement && parent.contains(focused) ? focused.getAttribute('aria-label') : null;
+  replace(parent, ...children);
+  if (name) parent.querySelector<HTMLElement>(`[aria-label="${CSS.escape(name)}"]`)?.focus();
+}

@@ -143,7 +143,8 @@ export function quizHighlight(mesh: HalfedgeMesh, path: Selection[], picked: Sel
   return spec;
 }
 
-function labelPoint(mesh: HalfedgeMesh, s: Selection): Point {
+/** Where a label for an element goes. */
+export function labelPoint(mesh: HalfedgeMesh, s: Selection): Point {
   if (s.kind === 'halfedge') return arrowMiddle(mesh, s.id);
   if (s.kind === 'vertex') return mesh.position(s.id) as Point;
   if (s.kind === 'face') return faceCentroid(mesh, s.id) as Point;

@@ -38,7 +38,10 @@ export interface FixtureResult {
   fixture: string;
   checks: Check[];
   writes: PracticeWrite[];
+  /** Halfedges the code read a pointer of, in order (the first `MAX_VISITS` of `reads`). */
   visits: number[];
+  /** Pointer reads in all. */
+  reads: number;
   firstBroken: FirstBroken | null;
   /** The mesh after the solution's writes. */
   after: HalfedgeMesh;
@@ -82,7 +85,7 @@ export function gradeFixture(
       failure ?? compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ?? compareMeshes(after, reference.mesh),
     );
   }
-  return { fixture: fixture.name, checks, writes: output.writes, visits: output.visits, firstBroken, after };
+  return { fixture: fixture.name, checks, writes: output.writes, visits: output.visits, reads: output.reads, firstBroken, after };
 }
 
 function at(line: number | null): string {

@@ -11,19 +11,26 @@ import { exercises } from '../../core/practice/exercises.js';
 import type { FirstBroken } from '../../core/practice/grade.js';
 import { type GradeReport, gradeSolution } from '../../core/practice/grade-solution.js';
 import { whyNotDrawable } from '../../core/practice/drawable.js';
-import { PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
+import { MAX_VISITS, PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
 import { SolutionError } from '../../core/practice/solution-error.js';
 import { applyWrite, describeWrite, pointerChangeOf, type PracticeWrite } from '../../core/practice/writes.js';
-import { el, replace } from '../dom.js';
+import { el, replace, replaceKeepingFocus } from '../dom.js';
 import { fixtureFiles } from '../practice-link.js';
+import { readMarks, writeMarks } from '../practice-marks.js';
 import { browserRunner } from '../practice-sandbox.js';
 import type { PracticeEditor } from '../practice-editor.js';
+import type { HighlightSpec } from '../scene/highlight.js';
 
 export interface PracticeActions {
-  /** Shows a state of a run in the view, with the write that led to it as the pointer diff; `frame` points the camera at it. */
-  showState(mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean): Promise<void>;
-  /** Selects an element in the view (a culprit of the first broken invariant). */
-  select(kind: 'halfedge' | 'vertex' | 'face', id: number): void;
+  /**
+   * Shows a state of a run in the view, with the write that led to it as the pointer diff and
+   * `marks` drawn on it; `frame` points the camera at it.
+   */
+  showState(mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean, marks: HighlightSpec | null): Promise<void>;
+  /** Changes the marks on the state shown; false when the view has moved on to another mesh. */
+  mark(marks: HighlightSpec | null): boolean;
+  /** Selects an element in the view (a culprit of the first broken invariant), or nothing. */
+  select(selection: { kind: 'halfedge' | 'vertex' | 'face'; id: number } | null): void;
   say(message: string, role?: 'status' | 'alert'): void;
 }
 
@@ -41,6 +48,8 @@ export interface PracticeRunResult {
 
 /** Writes listed in the panel (all of them can still be stepped through with the buttons). */
 const WRITES_LISTED = 400;
+/** How fast Play walks a query's reads: a face loop of six halfedges plays in about two seconds. */
+const READS_PER_SECOND = 4;
 
 const storageKey = (id: string) => `halfedge-lab.practice.${id}`;
 
@@ -60,6 +69,9 @@ export class PracticePanel {
    * fewer when the state asked for cannot be drawn (a pointer half-way rewired: `why`).
    */
   shown: { fixture: number; write: number; drawn: number; why: string | null } | null = null;
+  /** For a query: the fixture whose reads are shown, and the read the view is at (an index into its visits). */
+  read: { fixture: number; step: number } | null = null;
+  private readTimer: ReturnType<typeof setInterval> | null = null;
   private hintsShown = 0;
   /** The fixture run the camera was last pointed at. */
   private framed: unknown = null;
@@ -75,6 +87,7 @@ export class PracticePanel {
   private readonly checks = el('ul', { class: 'practice-checks' });
   private readonly broken = el('div', { class: 'practice-broken' });
   private readonly writes = el('div', { class: 'practice-writes' });
+  private readonly reads = el('div', { class: 'practice-writes' });
 
   constructor(
     container: HTMLElement,
@@ -98,6 +111,7 @@ export class PracticePanel {
       this.checks,
       this.broken,
       this.writes,
+      this.reads,
     );
     this.editorHost.addEventListener('keydown', (event) => {
       if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) {
@@ -122,6 +136,8 @@ export class PracticePanel {
     this.exercise = exercise;
     this.report = null;
     this.shown = null;
+    this.stopReads();
+    this.read = null;
     this.hintsShown = 0;
     this.code = saved(id)?.code ?? exercise.starter;
     this.editor?.setText(this.code);
@@ -134,6 +150,7 @@ export class PracticePanel {
     replace(this.checks);
     replace(this.broken);
     replace(this.writes);
+    replace(this.reads);
   }
 
   /** Loads the editor (once) and shows the exercise's first fixture, when the tab is opened. */
@@ -150,7 +167,7 @@ export class PracticePanel {
     const fixture = this.exercise.fixtures[0];
     this.framed = this.exercise;
     const input = fixture.input === undefined ? '' : `, input ${fixture.input}`;
-    await this.actions.showState(serializeMesh(fixtureMesh(fixture, fixtureFiles)), `practice: ${this.exercise.title}, ${fixture.name}${input}`, null, true);
+    await this.actions.showState(serializeMesh(fixtureMesh(fixture, fixtureFiles)), `practice: ${this.exercise.title}, ${fixture.name}${input}`, null, true, null);
   }
 
   setCode(text: string): void {
@@ -162,6 +179,7 @@ export class PracticePanel {
     if (this.running) throw new Error('a run is under way');
     this.running = true;
     this.runButton.disabled = true;
+    this.stopReads();
     this.summary.textContent = `Running on ${this.exercise.fixtures.length} fixtures…`;
     try {
       const report = await gradeSolution(this.exercise, this.code, browserRunner, fixtureFiles);
@@ -179,7 +197,11 @@ export class PracticePanel {
         // the result, with a culprit of the first broken invariant selected
         await this.show(shown, fixture.writes.length);
         const culprit = fixture.firstBroken ? firstCulprit(fixture.firstBroken) : null;
-        if (culprit && this.shown?.drawn === fixture.writes.length) this.actions.select(culprit.kind, culprit.id);
+        if (culprit && this.shown?.drawn === fixture.writes.length) this.actions.select(culprit);
+      } else {
+        // every halfedge the query read; Play walks through them in order
+        this.read = null;
+        await this.showRead(shown, fixture.visits.length - 1);
       }
       return resultOf(report, shown);
     } catch (error) {
@@ -188,6 +210,7 @@ export class PracticePanel {
       replace(this.checks);
       replace(this.broken, lineButton(error.line, (line) => this.goToLine(line)));
       replace(this.writes);
+      replace(this.reads);
       return { passed: false, checks: [], writes: [], firstBroken: null, fixtures: [], error: { message: error.message, line: error.line } };
     } finally {
       this.running = false;
@@ -210,16 +233,65 @@ export class PracticePanel {
     const why = whyNotDrawable(mesh);
     const frame = this.shown?.fixture !== fixture || this.framed !== result;
     this.framed = result;
+    // the marks say what this state is about; a selection made on another state would crowd them
+    this.actions.select(null);
     this.shown = { fixture, write, drawn: Math.max(0, drawn), why };
     let state = mesh;
     if (drawn !== write) {
       state = result.before.clone();
       for (let i = 0; i < drawn; i++) applyWrite(state, result.writes[i]);
     }
-    const label = `practice: ${this.exercise.title}, ${result.fixture}${drawn <= 0 ? '' : `, after write ${drawn}`}`;
+    // the write that led here, or every write since the last state that can be drawn, marked on it
+    const marked = result.writes.slice(drawn === write ? Math.max(0, write - 1) : Math.max(0, drawn), write);
+    const from = Math.max(0, drawn) + 1;
+    const pending = drawn === write ? '' : from === write ? `, write ${write} marked` : `, writes ${from}–${write} marked`;
+    const label = `practice: ${this.exercise.title}, ${result.fixture}${drawn <= 0 ? '' : `, after write ${drawn}`}${pending}`;
     const change = drawn > 0 ? pointerChangeOf(result.writes[drawn - 1]) : null;
-    await this.actions.showState(serializeMesh(state), label, change ? { changes: [change], total: 1 } : null, frame);
+    await this.actions.showState(serializeMesh(state), label, change ? { changes: [change], total: 1 } : null, frame, writeMarks(state, marked));
     this.drawWrites(fixture);
+  }
+
+  /** For a query: shows fixture `fixture` with the halfedges its run read up to read `step` (zero-based) marked. */
+  async showRead(fixture: number, step: number): Promise<void> {
+    const result = this.report?.fixtures[fixture];
+    if (!result) return;
+    const at = Math.max(0, Math.min(step, result.visits.length - 1));
+    const marks = result.visits.length === 0 ? null : readMarks(result.before, result.visits, at);
+    const sameFixture = this.read?.fixture === fixture;
+    this.read = { fixture, step: at };
+    // a step on the fixture in the view only changes the marks; another fixture is shown first
+    if (!sameFixture || !this.actions.mark(marks)) {
+      const input = result.input === undefined ? '' : `, input ${result.input}`;
+      await this.actions.showState(serializeMesh(result.before), `practice: ${this.exercise.title}, ${result.fixture}${input}`, null, this.framed !== result, marks);
+      this.framed = result;
+    }
+    this.drawReads(fixture);
+  }
+
+  /** Plays the reads of the fixture shown, a few a second, from the start when at the end. */
+  async playReads(): Promise<void> {
+    const read = this.read;
+    const result = read ? this.report?.fixtures[read.fixture] : undefined;
+    if (!read || !result || result.visits.length === 0) return;
+    this.stopReads();
+    const last = result.visits.length - 1;
+    await this.showRead(read.fixture, read.step >= last ? 0 : read.step);
+    this.readTimer = setInterval(() => {
+      const now = this.read;
+      if (!now || now.step >= last) return this.stopReads();
+      now.step++;
+      // the view has moved on (another mesh opened, an undo): the reads stop rather than bring the fixture back
+      if (!this.actions.mark(readMarks(result.before, result.visits, now.step))) return this.stopReads();
+      this.drawReads(now.fixture);
+    }, 1000 / READS_PER_SECOND);
+    this.drawReads(read.fixture);
+  }
+
+  stopReads(): void {
+    if (this.readTimer === null) return;
+    clearInterval(this.readTimer);
+    this.readTimer = null;
+    if (this.read) this.drawReads(this.read.fixture);
   }
 
   state() {
@@ -229,6 +301,7 @@ export class PracticePanel {
       running: this.running,
       passed: this.report?.passed ?? null,
       shown: this.shown,
+      read: this.read && { ...this.read, total: this.report?.fixtures[this.read.fixture].visits.length ?? 0, playing: this.readTimer !== null },
       progress: Object.fromEntries(this.exercises.map((e) => [e.id, saved(e.id)?.passed ?? false])),
     };
   }
@@ -293,13 +366,11 @@ export class PracticePanel {
     if (!result || this.exercise.kind === 'query') return replace(this.writes);
     const shown = this.shown?.fixture === fixture ? this.shown : null;
     const at = shown ? shown.write : -1;
-    const pick = el('select', { 'aria-label': 'Fixture whose writes are listed', onchange: () => void this.show(Number(pick.value), this.report!.fixtures[Number(pick.value)].writes.length) },
-      ...this.report!.fixtures.map((f, i) => el('option', { value: i, selected: i === fixture }, f.fixture)));
     const step = (delta: number) => void this.show(fixture, (at < 0 ? 0 : at) + delta);
-    replace(
+    replaceKeepingFocus(
       this.writes,
       el('h3', {}, `Writes (${result.writes.length})`),
-      el('label', {}, 'On ', pick),
+      this.fixturePicker('writes', fixture, (i) => void this.show(i, this.report!.fixtures[i].writes.length)),
       el(
         'div',
         { class: 'practice-buttons' },
@@ -316,7 +387,7 @@ export class PracticePanel {
           el(
             'li',
             { class: [i + 1 === at ? 'current' : '', result.firstBroken?.write === i ? 'culprit' : ''].join(' ').trim() || undefined },
-            el('button', { type: 'button', onclick: () => void this.show(fixture, i + 1) }, describeWrite(write)),
+            el('button', { type: 'button', 'aria-label': `Show the mesh after write ${i + 1}, ${describeWrite(write)}`, onclick: () => void this.show(fixture, i + 1) }, describeWrite(write)),
             write.line === null ? '' : el('span', { class: 'line' }, ` line ${write.line}`),
           ),
         ),
@@ -324,6 +395,38 @@ export class PracticePanel {
       result.writes.length > WRITES_LISTED ? el('p', { class: 'note' }, `The first ${WRITES_LISTED} are listed; step with the buttons to see the rest.`) : null,
     );
     this.writes.querySelector('li.current')?.scrollIntoView({ block: 'nearest' });
+  }
+
+  /** A query's reads on one fixture: play them, or step, in the view. */
+  private drawReads(fixture: number): void {
+    const result = this.report?.fixtures[fixture];
+    if (!result || this.exercise.kind !== 'query') return replace(this.reads);
+    const total = result.visits.length;
+    const at = this.read?.fixture === fixture ? this.read.step : 0;
+    const playing = this.readTimer !== null;
+    const kept = total === MAX_VISITS ? ` (the first ${total.toLocaleString('en')} of ${result.reads.toLocaleString('en')} reads are kept)` : '';
+    replaceKeepingFocus(
+      this.reads,
+      el('h3', {}, `Reads (${total})`),
+      this.fixturePicker('reads', fixture, (i) => void this.showRead(i, this.report!.fixtures[i].visits.length - 1)),
+      total === 0
+        ? el('p', { class: 'note' }, 'The code read no halfedge pointer on this fixture.')
+        : el(
+            'div',
+            { class: 'practice-buttons' },
+            el('button', { type: 'button', 'aria-label': 'Play the reads', 'aria-pressed': String(playing), onclick: () => (playing ? this.stopReads() : void this.playReads()) }, playing ? 'Pause' : 'Play'),
+            el('button', { type: 'button', 'aria-label': 'Show the previous read', disabled: at <= 0, onclick: () => void this.showRead(fixture, at - 1) }, 'Previous read'),
+            el('button', { type: 'button', 'aria-label': 'Show the next read', disabled: at >= total - 1, onclick: () => void this.showRead(fixture, at + 1) }, 'Next read'),
+          ),
+      total === 0 ? null : el('p', { class: 'note', role: 'status' }, `Read ${at + 1} of ${total}: h${result.visits[at]} (orange); the halfedges read before it are blue${kept}.`),
+    );
+  }
+
+  /** Which fixture's writes or reads are listed. */
+  private fixturePicker(what: 'writes' | 'reads', fixture: number, pick: (fixture: number) => void): HTMLElement {
+    const select = el('select', { 'aria-label': `Fixture whose ${what} are shown`, onchange: () => pick(Number(select.value)) },
+      ...this.report!.fixtures.map((f, i) => el('option', { value: i, selected: i === fixture }, f.fixture)));
+    return el('label', {}, 'On ', select);
   }
 
   private exportSolutions(): void {
@@ -347,7 +450,7 @@ function shownText(shown: PracticePanel['shown'], total: number): string {
   if (!shown) return '';
   const after = (n: number) => (n === 0 ? 'the fixture before any write' : `the mesh after write ${n} of ${total}`);
   if (shown.drawn === shown.write) return `The view shows ${after(shown.write)}.`;
-  return `After write ${shown.write} the pointers are half-way rewired (${shown.why}), which cannot be drawn: the view shows ${after(shown.drawn)}, the last state that can.`;
+  return `After write ${shown.write} the pointers are half-way rewired (${shown.why}), which cannot be drawn: the view shows ${after(shown.drawn)}, the last state that can, with the writes since marked on it.`;
 }
 
 function resultOf(report: GradeReport, shown: number): PracticeRunResult {
