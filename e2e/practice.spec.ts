@@ -57,6 +57,10 @@ test.describe('practice mode', () => {
     await expect(page.locator('.practice-writes .note')).toContainText('After write 2 the pointers');
     await expect(page.locator('#status')).toHaveText(/, writes 1–2 marked\.$/);
     expect(await page.evaluate(() => document.activeElement?.getAttribute('aria-label'))).toBe('Show the next write');
+    // in presentation mode the code is as large as every other text (the editor's shadow root too)
+    await page.locator('#presentation').click();
+    expect(await page.locator('.practice-editor .cm-content').evaluate((node) => parseFloat(getComputedStyle(node).fontSize))).toBeGreaterThanOrEqual(20);
+    await page.locator('#presentation').click();
     expect(appErrors(page)).toEqual([]);
   });
 

@@ -30,7 +30,7 @@ export function createEditor(host: HTMLElement, text: string, onChange: (text: s
     parent,
     root,
     extensions: [
-      EditorView.theme({ '&': { fontSize: '0.85rem', minHeight: '8em' }, '.cm-scroller': { fontFamily: 'ui-monospace, Menlo, Consolas, monospace' } }),
+      EditorView.theme({ '&': { fontSize: 'var(--practice-code-size, 0.85rem)', minHeight: '8em' }, '.cm-scroller': { fontFamily: 'ui-monospace, Menlo, Consolas, monospace' } }),
       basicSetup,
       javascript(),
       autocompletion({ override: [complete] }),
