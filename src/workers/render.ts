@@ -19,7 +19,7 @@ import type { ChangeRecord, HalfedgeMesh } from '../core/index.js';
 import { faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
 import { PICK_IN_WORKER_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
-import { faceTriangles } from './triangulate.js';
+import { faceTriangles } from '../core/face-triangles.js';
 
 /** Spare room in every buffer, so that edits rarely need a fresh layout. */
 const SPARE = 1024;

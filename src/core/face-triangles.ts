@@ -1,12 +1,31 @@
 /**
- * Triangles for drawing a face: `degree − 2` of them, as vertex ids. A triangle passes through;
- * convex polygons become fans; non-convex ones are ear-clipped in their own plane, so an L-shaped
- * face draws as an L. The mesh itself is not changed.
+ * Triangles of a face, for drawing it and for writing formats that hold only triangles: `degree − 2`
+ * of them. A triangle passes through; convex polygons become fans; non-convex ones are ear-clipped
+ * in their own plane, so an L-shaped face draws as an L. The mesh itself is not changed.
  */
-import { faceVectorArea, type HalfedgeMesh, planeBasis, triangulatePolygon } from '../core/index.js';
+import { planeBasis, triangulatePolygon } from './edits/triangulate.js';
+import { faceVectorArea } from './geometry.js';
+import type { HalfedgeMesh } from './mesh.js';
 
 export function faceTriangles(mesh: HalfedgeMesh, f: number): Uint32Array {
-  const { heNext, heVertex, fHalfedge, positions: p } = mesh;
+  const loop = faceLoop(mesh, f);
+  return Uint32Array.from(faceCornerTriangles(mesh, f, loop), (i) => loop[i]);
+}
+
+/**
+ * The same triangles as positions in the face's loop of vertices (0 is the origin of
+ * `fHalfedge[f]`, 1 that of the next halfedge, …), for a writer that keeps values per corner.
+ */
+export function faceCornerTriangles(mesh: HalfedgeMesh, f: number, loop = faceLoop(mesh, f)): number[] {
+  const normal = [0, 0, 0];
+  const corners = loop.map((_, i) => i);
+  if (loop.length === 3 || isConvex(mesh.positions, loop, faceVectorArea(mesh, f, normal))) return fan(corners);
+  return earClip(mesh.positions, loop, normal);
+}
+
+/** The face's vertices from its `fHalfedge` along `next` (a bounded walk). */
+function faceLoop(mesh: HalfedgeMesh, f: number): number[] {
+  const { heNext, heVertex, fHalfedge } = mesh;
   const loop: number[] = [];
   const start = fHalfedge[f];
   let h = start;
@@ -14,9 +33,7 @@ export function faceTriangles(mesh: HalfedgeMesh, f: number): Uint32Array {
     loop.push(heVertex[h]);
     h = heNext[h];
   } while (h !== start && loop.length <= mesh.halfedgeSlots);
-  const normal = [0, 0, 0];
-  const corners = loop.length === 3 || isConvex(p, loop, faceVectorArea(mesh, f, normal)) ? fan(loop) : earClip(p, loop, normal);
-  return Uint32Array.from(corners);
+  return loop;
 }
 
 function fan(loop: number[]): number[] {
@@ -44,7 +61,7 @@ function isConvex(p: Float64Array, loop: number[], normal: number[]): boolean {
   return true;
 }
 
-/** Ear clipping in the face's best-fit plane (a face whose outline crosses itself gets a fan). */
+/** Ear clipping in the face's best-fit plane (a face whose outline crosses itself gets a fan); positions in the loop. */
 function earClip(p: Float64Array, loop: number[], normal: number[]): number[] {
   const [u, w] = planeBasis(normal[0], normal[1], normal[2]);
   const flat = new Float64Array(2 * loop.length);
@@ -56,5 +73,5 @@ function earClip(p: Float64Array, loop: number[], normal: number[]): number[] {
     flat[2 * i + 1] = x * w[0] + y * w[1] + z * w[2];
   });
   const corners = triangulatePolygon(flat, []);
-  return corners ? Array.from(corners, (i) => loop[i]) : fan(loop);
+  return corners ? Array.from(corners) : fan(loop.map((_, i) => i));
 }
