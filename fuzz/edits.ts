@@ -221,7 +221,7 @@ function decimateStep(mesh: HalfedgeMesh, share: number): Plan {
  * The fuzz target over `commands` (every edit and operation by default; the tests add a broken
  * one to see that it is caught).
  */
-export function editSequenceTarget(commands = editCommands): FuzzTarget {
+export function editSequenceTarget(commands = editCommands): FuzzTarget<CaseOutcome> {
   const sequence = fc.record({
     shape: fc.constantFrom(...Object.keys(shapes)),
     commands: fc.commands(commands, { maxCommands: 12 }),

@@ -244,7 +244,7 @@ export function checkInput(name: string, bytes: Uint8Array): { kind: 'refused'; 
   }
 }
 
-/** Case (seed, index) of a reader fuzzer: sample `index` (modulo), mutated 1 to 8 times (mostly once or twice). */
+/** Case (seed, index) of a reader fuzzer: sample `index` (modulo), mutated 1 to 8 times (mostly once or twice); also the glTF fuzzer's. */
 export function mutatedSample(samples: Sample[], seed: number, index: number): { sample: string; steps: string[]; bytes: Uint8Array } {
   const rand = seededRandom(caseSeed(seed, index));
   const sample = samples[index % samples.length];
@@ -269,7 +269,7 @@ export function mutatedSample(samples: Sample[], seed: number, index: number): {
  * The fuzz target mutating `samples`, named `name`. Case (seed, index): 1 to 8 mutations of sample
  * `index` (modulo), put through `check` (the tests plant a broken one).
  */
-export function readerTarget(name: string, samples: Sample[], check = checkInput): FuzzTarget {
+export function readerTarget(name: string, samples: Sample[], check = checkInput): FuzzTarget<CaseOutcome> {
   return {
     name,
     runCase(seed: number, index: number): CaseOutcome {

@@ -105,7 +105,7 @@ async function loadTargets(targetModule: string | undefined): Promise<FuzzTarget
 async function runChild(job: Job): Promise<void> {
   const target = (await loadTargets(job.targetModule)).find((t) => t.name === job.target)!;
   for (let index = job.from; index < job.to; index++) {
-    const outcome = target.runCase(job.seed, index);
+    const outcome = await target.runCase(job.seed, index);
     const report: Report = [index, outcome.kind === 'failure' ? { index, reason: outcome.reason, input: outcome.input } : outcome.kind === 'refused' ? 'r' : 'a'];
     process.send!(report);
   }
@@ -207,7 +207,7 @@ async function main(): Promise<void> {
 
   if (options.replay !== undefined) {
     if (chosen.length !== 1) usage('--replay needs --only NAME');
-    const outcome: CaseOutcome = chosen[0].runCase(options.seed, options.replay);
+    const outcome: CaseOutcome = await chosen[0].runCase(options.seed, options.replay);
     console.log(JSON.stringify({ target: chosen[0].name, seed: options.seed, index: options.replay, ...outcome }, null, 2));
     process.exitCode = outcome.kind === 'failure' ? 1 : 0;
     return;

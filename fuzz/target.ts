@@ -14,11 +14,14 @@ export type CaseOutcome =
   /** Anything else: another exception, an invalid mesh, a round trip that changed the mesh. */
   | { kind: 'failure'; reason: string; input: string };
 
-export interface FuzzTarget {
+export interface FuzzTarget<Outcome extends CaseOutcome | Promise<CaseOutcome> = CaseOutcome | Promise<CaseOutcome>> {
   /** Short name used on the command line (`--only NAME`) and in reports. */
   name: string;
-  /** Runs case `index` of the stream seeded by `seed`. Catches what the case throws: never throws itself. */
-  runCase(seed: number, index: number): CaseOutcome;
+  /**
+   * Runs case `index` of the stream seeded by `seed`. Catches what the case throws: never throws
+   * (or rejects) itself. Asynchronous for readers whose decoders are (glTF).
+   */
+  runCase(seed: number, index: number): Outcome;
 }
 
 /**

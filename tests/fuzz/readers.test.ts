@@ -6,12 +6,12 @@
  */
 import { describe, expect, it } from 'vitest';
 import { builtInSamples, checkInput, corpusSamples, corpusTarget, readersTarget, readerTarget } from '../../fuzz/readers.js';
-import type { FuzzTarget } from '../../fuzz/target.js';
+import type { CaseOutcome, FuzzTarget } from '../../fuzz/target.js';
 import { meshFromHalfedgeJSON, ParseError, readMesh } from '../../src/index.js';
 
 const SEED = 20261125;
 
-function failuresOf(target: FuzzTarget, cases: number): string[] {
+function failuresOf(target: FuzzTarget<CaseOutcome>, cases: number): string[] {
   const failures: string[] = [];
   for (let index = 0; index < cases; index++) {
     const outcome = target.runCase(SEED, index);

@@ -34,6 +34,6 @@ describe('npm run fuzz', () => {
   it('refuses an unknown target by name, listing the known ones', () => {
     const run = runFuzz(['--only', 'nothing', '--count', '1']);
     expect(run.status).toBe(2);
-    expect(run.stderr).toContain("fuzz: no target named 'nothing' (targets: readers, corpus, edits)");
+    expect(run.stderr).toContain("fuzz: no target named 'nothing' (targets: readers, corpus, edits, gltf)");
   });
 });

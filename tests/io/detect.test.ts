@@ -22,6 +22,14 @@ describe('detectFormat', () => {
     expect(detectFormat(bytes)).toBe('stl');
   });
 
+  it('knows glTF by the GLB magic or by JSON with an asset, and by the names .glb and .gltf', () => {
+    expect(detectFormat(Uint8Array.of(0x67, 0x6c, 0x54, 0x46, 2, 0, 0, 0), 'model.bin')).toBe('gltf');
+    expect(detectFormat(text('\n  { "asset": { "version": "2.0" }, "meshes": [] }'))).toBe('gltf');
+    expect(detectFormat(text('{ "name": "not a model" }'), 'x.gltf')).toBe('gltf');
+    expect(() => detectFormat(text('{ "name": "not a model" }'), 'x.json')).toThrow(ParseError);
+    expect([formatFromFileName('a.GLB'), formatFromFileName('b.gltf')]).toEqual(['gltf', 'gltf']);
+  });
+
   it('asks the file name only when the content does not say', () => {
     expect(detectFormat(text('3 1 0\n0 0 0\n'), 'TRI.OFF')).toBe('off');
     expect(detectFormat(text('\x00\x01garbage'), 'part.stl')).toBe('stl');
@@ -35,7 +43,7 @@ describe('detectFormat', () => {
     expect(unknown).toBeInstanceOf(ParseError);
     expect(unknown.message).toBe(
       "file: byte 0: unknown format of 'page.html'; it starts with '<html>hello</html>'. " +
-        'Supported: PLY (.ply), OFF (.off), OBJ (.obj), STL (.stl)',
+        'Supported: PLY (.ply), OFF (.off), OBJ (.obj), STL (.stl), glTF (.glb, .gltf)',
     );
   });
 });

@@ -26,6 +26,7 @@ export function detectFormat(bytes: Uint8Array, fileName?: string): MeshFormat {
   const named = fileName === undefined ? undefined : formatFromFileName(fileName);
   if (bytes.length === 0) throw new ParseError(named ?? 'file', { byteOffset: 0 }, 'the file is empty (0 bytes)');
   if (startsWithPlyLine(bytes)) return 'ply';
+  if (isGltf(bytes)) return 'gltf';
   if (isBinaryStl(bytes)) return 'stl';
   const head = bytes.subarray(0, SNIFF_BYTES);
   const first = firstWord(head);
@@ -35,7 +36,7 @@ export function detectFormat(bytes: Uint8Array, fileName?: string): MeshFormat {
   if (named) return named;
   const name = fileName ? ` of '${fileName}'` : '';
   const start = first ? `; it starts with '${first.slice(0, 24)}'` : '';
-  const supported = 'Supported: PLY (.ply), OFF (.off), OBJ (.obj), STL (.stl)';
+  const supported = 'Supported: PLY (.ply), OFF (.off), OBJ (.obj), STL (.stl), glTF (.glb, .gltf)';
   throw new ParseError('file', { byteOffset: 0 }, `unknown format${name}${start}. ${supported}`);
 }
 
@@ -43,8 +44,19 @@ export function detectFormat(bytes: Uint8Array, fileName?: string): MeshFormat {
 export function formatFromFileName(name: string): MeshFormat | undefined {
   const extension = /\.([a-z0-9]+)$/i.exec(name)?.[1].toLowerCase() ?? '';
   if (extension === 'ply' || extension === 'obj' || extension === 'stl') return extension;
+  if (extension === 'glb' || extension === 'gltf') return 'gltf';
   if (extension.endsWith('off')) return 'off';
   return undefined;
+}
+
+/** The magic number that starts a GLB: "glTF" in ASCII, read as a little-endian uint32. */
+export const GLB_MAGIC = 0x46546c67;
+
+/** A GLB (its magic), or glTF JSON (an object with an `asset` near its start). */
+function isGltf(bytes: Uint8Array): boolean {
+  if (bytes.length >= 4 && new DataView(bytes.buffer, bytes.byteOffset, 4).getUint32(0, true) === GLB_MAGIC) return true;
+  const head = decodeText(bytes.subarray(0, 4096), 0, 4096).trimStart();
+  return head.startsWith('{') && /"asset"\s*:/.test(head);
 }
 
 /** "ply", then the end of the line (or a space before it). */

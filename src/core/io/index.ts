@@ -5,8 +5,10 @@
  * - `readMesh(bytes)` reads PLY (ascii and both binary byte orders), OFF (text and binary), OBJ
  *   and STL (ascii and binary) into a polygon soup, faces kept as polygons, attributes attached
  *   under the names `normal`, `color` and `texcoord` (per vertex, face or face corner).
+ * - `readMeshAsync(bytes)` reads those and glTF 2.0 (`.glb`, `.gltf` with its buffers), welding
+ *   the vertices glTF splits along seams and keeping their normals and UVs per corner.
  * - `writeMesh(mesh, format)` writes PLY, binary PLY, OFF or OBJ; reading the result back gives
- *   the same soup.
+ *   the same soup; `writeMeshAsync(mesh, 'glb')` writes binary glTF too.
  * - `meshToHalfedgeJSON` / `meshFromHalfedgeJSON` write and read the halfedge tables themselves.
  *
  * Every malformed file raises `ParseError` with the place: line and column, or byte offset.
@@ -14,5 +16,7 @@
 export { detectFormat, formatFromFileName } from './detect.js';
 export * from './halfedge-json.js';
 export type { Encoding, MeshFile, MeshFormat, ReadOptions } from './mesh-file.js';
-export { readMesh } from './read.js';
-export { meshToSoup, type WriteFormat, writeFormatFromFileName, writeMesh, writeSoup } from './write.js';
+export type { GltfReadOptions } from './gltf.js';
+export { readMesh, readMeshAsync } from './read.js';
+export { weldPositions } from './weld.js';
+export { meshToSoup, type WriteFormat, writeFormatFromFileName, writeMesh, writeMeshAsync, writeSoup } from './write.js';

@@ -5,7 +5,7 @@
  */
 import type { PolygonSoup } from '../soup.js';
 
-export type MeshFormat = 'ply' | 'off' | 'obj' | 'stl';
+export type MeshFormat = 'ply' | 'off' | 'obj' | 'stl' | 'gltf';
 
 export type Encoding = 'ascii' | 'binary_little_endian' | 'binary_big_endian';
 

@@ -5,13 +5,14 @@
 import { ParseError } from '../errors.js';
 import { detectFormat } from './detect.js';
 import { firstNonFiniteValue } from './finite.js';
+import type { GltfReadOptions } from './gltf.js';
 import type { MeshFile, MeshFormat, Progress, ReadOptions } from './mesh-file.js';
 import { readObj } from './obj.js';
 import { readOff } from './off.js';
 import { readPly } from './ply.js';
 import { readStl } from './stl.js';
 
-const readers: Record<MeshFormat, (bytes: Uint8Array, progress: Progress) => MeshFile> = {
+const readers: Record<Exclude<MeshFormat, 'gltf'>, (bytes: Uint8Array, progress: Progress) => MeshFile> = {
   ply: readPly,
   off: readOff,
   obj: readObj,
@@ -19,7 +20,7 @@ const readers: Record<MeshFormat, (bytes: Uint8Array, progress: Progress) => Mes
 };
 
 /**
- * Reads a PLY, OFF, OBJ or STL file. The format comes from the content (the file name is asked
+ * Reads a PLY, OFF, OBJ or STL file (glTF, whose decoders load on demand, is `readMeshAsync`'s). The format comes from the content (the file name is asked
  * only when the content does not say); faces stay polygons, attributes come along.
  * @example
  *   const file = readMesh(bytes, { fileName: 'bunny.ply' });
@@ -31,10 +32,32 @@ export function readMesh(data: ArrayBuffer | Uint8Array, options: ReadOptions = 
   const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
   const progress = options.onProgress ?? (() => {});
   const format = detectFormat(bytes, options.fileName);
+  if (format === 'gltf') throw new ParseError('glTF', {}, 'a glTF file is read with `await readMeshAsync(bytes)`');
   progress(0);
   const file = readers[format](bytes, progress);
+  return checkedFile(file, progress);
+}
+
+/**
+ * Reads any file `readMesh` reads, and glTF 2.0 (`.glb`, or `.gltf` with its buffers in
+ * `options.resources`), whose vertices are welded by position (see `readGltf`).
+ * @example
+ *   const file = await readMeshAsync(bytes, { fileName: 'duck.glb' });
+ * @throws ParseError as `readMesh` does, naming the buffer or the accessor for glTF.
+ */
+export async function readMeshAsync(data: ArrayBuffer | Uint8Array, options: ReadOptions & GltfReadOptions = {}): Promise<MeshFile> {
+  const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
+  if (detectFormat(bytes, options.fileName) !== 'gltf') return readMesh(bytes, options);
+  const progress = options.onProgress ?? (() => {});
+  progress(0);
+  // glTF-Transform and the decoders load only when a glTF file comes
+  const { readGltf } = await import('./gltf.js');
+  return checkedFile(await readGltf(bytes, options), progress);
+}
+
+function checkedFile(file: MeshFile, progress: Progress): MeshFile {
   const nonFinite = firstNonFiniteValue(file.soup);
-  if (nonFinite) throw new ParseError(format, {}, nonFinite);
+  if (nonFinite) throw new ParseError(file.format === 'gltf' ? 'glTF' : file.format, {}, nonFinite);
   progress(1);
   return file;
 }

@@ -50,6 +50,20 @@ export function writeSoup(soup: PolygonSoup, format: WriteFormat): Uint8Array {
 }
 
 /**
+ * Writes PLY, OFF, OBJ (as `writeMesh`) or a binary glTF (`'glb'`, see `writeGlb`), whose writer
+ * loads on demand.
+ * @example
+ *   const glb = await writeMeshAsync(mesh, 'glb');
+ */
+export async function writeMeshAsync(mesh: HalfedgeMesh, format: WriteFormat | 'glb'): Promise<Uint8Array> {
+  if (format !== 'glb') return writeMesh(mesh, format);
+  const nonFinite = firstNonFiniteValue(meshToSoup(mesh));
+  if (nonFinite) throw new InvalidInputError(`cannot write the mesh: ${nonFinite}; no reader would take it back`);
+  const { writeGlb } = await import('./gltf.js');
+  return writeGlb(mesh);
+}
+
+/**
  * `.ply` → 'ply' (ascii), `.off` → 'off', `.obj` → 'obj'; undefined for any other name.
  * @example
  *   writeFormatFromFileName('bunny.PLY'); // 'ply'

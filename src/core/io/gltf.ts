@@ -1,0 +1,441 @@
+/**
+ * glTF 2.0 in (`.glb`, or `.gltf` with its buffers) and out (`.glb`), through glTF-Transform.
+ *
+ * Reading takes every triangle primitive of every mesh node of the default scene, with the node's
+ * transform applied (strips and fans decoded; points and lines noted and skipped). glTF splits a
+ * vertex wherever its normal or texture coordinate differs, so each mesh's vertices are welded by
+ * position (`weld.ts`) and the normals and texture coordinates kept per face corner: the halfedge
+ * mesh is the surface, not a surface cut open along every seam. Writing splits them again.
+ *
+ * Compressed files (Draco, meshopt) load their decoder only when they need it. Before glTF-Transform
+ * sees a file, every buffer, buffer view and accessor is checked against the bytes there are, so a
+ * short or lying file gets a `ParseError` naming the accessor or the buffer.
+ */
+import { Document, type JSONDocument, type Logger, Primitive, WebIO } from '@gltf-transform/core';
+import { EXTMeshoptCompression, KHRDracoMeshCompression, KHRMeshQuantization } from '@gltf-transform/extensions';
+import { ParseError } from '../errors.js';
+import { faceCornerTriangles } from '../face-triangles.js';
+import type { HalfedgeMesh } from '../mesh.js';
+import type { SoupAttribute } from '../soup.js';
+import { GLB_MAGIC } from './detect.js';
+import type { MeshFile } from './mesh-file.js';
+import { weldPositions } from './weld.js';
+
+export interface GltfReadOptions {
+  fileName?: string;
+  /** The files a `.gltf` refers to (its `.bin` buffers), by name. */
+  resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>;
+  /** Weld vertices within this distance of each other (default 0: exactly equal positions). */
+  weldTolerance?: number;
+}
+
+const FORMAT = 'glTF';
+/** Elements an accessor without data (all zeros, or filled by a decoder) may claim: more is a bomb. */
+const MAX_ACCESSOR_COUNT = 1 << 27;
+const GEOMETRY_EXTENSIONS = [KHRDracoMeshCompression, EXTMeshoptCompression, KHRMeshQuantization];
+
+/**
+ * Reads a `.glb`, or a `.gltf` whose external buffers are in `options.resources`.
+ * @throws ParseError naming the byte, the buffer or the accessor that is wrong.
+ */
+export async function readGltf(bytes: Uint8Array, options: GltfReadOptions = {}): Promise<MeshFile> {
+  const notes: string[] = [];
+  const binary = bytes.length >= 4 && new DataView(bytes.buffer, bytes.byteOffset, 4).getUint32(0, true) === GLB_MAGIC;
+  const io = new WebIO().setLogger(noteLogger(notes)).setStrictResources(false).registerExtensions(GEOMETRY_EXTENSIONS);
+  const jsonDocument = binary ? await glbJson(io, bytes) : gltfJson(bytes, options.resources ?? new Map());
+  const json = jsonDocument.json;
+  if (!json.asset || typeof json.asset.version !== 'string' || !json.asset.version.startsWith('2.')) {
+    throw new ParseError(FORMAT, {}, `asset.version is ${JSON.stringify(json.asset?.version ?? null)}; only glTF 2.0 is read`);
+  }
+  // the mesh needs geometry only: a required extension for materials or textures does not stop it
+  const geometry = new Set<string>(GEOMETRY_EXTENSIONS.map((e) => e.EXTENSION_NAME));
+  const ignored = (json.extensionsRequired ?? []).filter((name) => !geometry.has(name));
+  if (ignored.length) notes.push(`required extensions ignored (they do not change the geometry): ${ignored.join(', ')}`);
+  json.extensionsRequired = (json.extensionsRequired ?? []).filter((name) => geometry.has(name));
+  checkData(jsonDocument);
+  await registerDecoders(io, json.extensionsUsed ?? []);
+  let gltf: Document;
+  try {
+    gltf = await io.readJSON(jsonDocument);
+  } catch (error) {
+    throw new ParseError(FORMAT, {}, `cannot read the document: ${(error as Error).message}`);
+  }
+  return gatherMeshes(gltf, binary, notes, options.weldTolerance ?? 0);
+}
+
+// -------------------------------------------------------------------------------------------------
+// Containers
+
+async function glbJson(io: WebIO, bytes: Uint8Array): Promise<JSONDocument> {
+  if (bytes.length < 20) throw new ParseError(FORMAT, { byteOffset: bytes.length }, `a GLB needs a 20-byte header; the file has ${bytes.length} bytes`);
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const version = view.getUint32(4, true);
+  if (version !== 2) throw new ParseError(FORMAT, { byteOffset: 4 }, `GLB version ${version}; only version 2 is read`);
+  const length = view.getUint32(8, true);
+  if (length > bytes.length) throw new ParseError(FORMAT, { byteOffset: 8 }, `the header says the file has ${length} bytes; it has ${bytes.length} (cut short?)`);
+  const jsonLength = view.getUint32(12, true);
+  if (20 + jsonLength > length) throw new ParseError(FORMAT, { byteOffset: 12 }, `the JSON chunk claims ${jsonLength} bytes; the file has ${length - 20} after the header`);
+  const text = new TextDecoder().decode(bytes.subarray(20, 20 + jsonLength));
+  let json: unknown;
+  try {
+    json = JSON.parse(text);
+  } catch (error) {
+    throw jsonError(error, 20);
+  }
+  checkShape(json);
+  try {
+    return await io.binaryToJSON(bytes.subarray(0, length));
+  } catch (error) {
+    throw new ParseError(FORMAT, {}, (error as Error).message);
+  }
+}
+
+function gltfJson(bytes: Uint8Array, files: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): JSONDocument {
+  let json: JSONDocument['json'];
+  try {
+    json = JSON.parse(new TextDecoder().decode(bytes)) as JSONDocument['json'];
+  } catch (error) {
+    throw jsonError(error, 0);
+  }
+  checkShape(json);
+  const resources: JSONDocument['resources'] = {};
+  const byName = new Map([...files].map(([name, data]) => [baseName(name), data]));
+  (json.buffers ?? []).forEach((buffer, i) => {
+    const uri = buffer.uri;
+    if (uri === undefined || uri.startsWith('data:')) return;
+    const data = files.get(uri) ?? byName.get(baseName(safeDecode(uri)));
+    if (!data) throw new ParseError(FORMAT, {}, `buffer ${i} is the file '${uri}', which was not given: open it together with the .gltf`);
+    resources[uri] = data;
+  });
+  // images are not needed for the geometry: unresolved ones are dropped (strict resources off)
+  for (const image of json.images ?? []) {
+    if (image.uri && !image.uri.startsWith('data:')) {
+      const data = files.get(image.uri) ?? byName.get(baseName(safeDecode(image.uri)));
+      if (data) resources[image.uri] = data;
+    }
+  }
+  return { json, resources };
+}
+
+function jsonError(error: unknown, offset: number): ParseError {
+  const message = (error as Error).message;
+  const position = /position (\d+)/.exec(message);
+  return new ParseError(FORMAT, position ? { byteOffset: offset + Number(position[1]) } : { byteOffset: offset }, `broken JSON: ${message}`);
+}
+
+const baseName = (path: string) => path.slice(path.lastIndexOf('/') + 1);
+
+function safeDecode(uri: string): string {
+  try {
+    return decodeURIComponent(uri);
+  } catch {
+    return uri;
+  }
+}
+
+// -------------------------------------------------------------------------------------------------
+// Checking the data against the bytes, before anything is allocated from it
+
+const componentBytes: Record<number, number> = { 5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4 };
+const typeItems: Record<string, number> = { SCALAR: 1, VEC2: 2, VEC3: 3, VEC4: 4, MAT2: 4, MAT3: 9, MAT4: 16 };
+
+/** The top-level lists are lists of objects, and every `uri` is text: a hostile document may say otherwise. */
+function checkShape(value: unknown): asserts value is JSONDocument['json'] {
+  if (value === null || typeof value !== 'object' || Array.isArray(value)) throw new ParseError(FORMAT, {}, 'the JSON is not an object');
+  const json = value as Record<string, unknown>;
+  const lists = ['buffers', 'bufferViews', 'accessors', 'meshes', 'nodes', 'scenes', 'images', 'materials', 'textures', 'extensionsUsed', 'extensionsRequired'] as const;
+  for (const list of lists) {
+    const items = json[list];
+    if (items === undefined) continue;
+    if (!Array.isArray(items)) throw new ParseError(FORMAT, {}, `${list} is ${JSON.stringify(items)?.slice(0, 40)}, not a list`);
+    items.forEach((item: unknown, i) => {
+      const text = list === 'extensionsUsed' || list === 'extensionsRequired';
+      if (text ? typeof item !== 'string' : item === null || typeof item !== 'object' || Array.isArray(item)) {
+        throw new ParseError(FORMAT, {}, `${list}[${i}] is ${JSON.stringify(item)?.slice(0, 40)}, not ${text ? 'a name' : 'an object'}`);
+      }
+      const uri = (item as { uri?: unknown }).uri;
+      if (!text && uri !== undefined && typeof uri !== 'string') throw new ParseError(FORMAT, {}, `${list}[${i}].uri is ${JSON.stringify(uri)?.slice(0, 40)}, not text`);
+    });
+  }
+}
+
+function checkData({ json, resources }: JSONDocument): void {
+  const bufferLengths = (json.buffers ?? []).map((buffer, i) => {
+    if (!Number.isInteger(buffer.byteLength) || buffer.byteLength < 0) throw new ParseError(FORMAT, {}, `buffer ${i} has no valid byteLength`);
+    const uri = buffer.uri;
+    if (uri === undefined) {
+      // a fallback buffer of EXT_meshopt_compression holds no bytes: its views are decoded
+      if (buffer.extensions?.EXT_meshopt_compression) return Infinity;
+      return resources['@glb.bin']?.byteLength ?? 0;
+    }
+    const length = uri.startsWith('data:') ? dataUriLength(uri) : resources[uri]?.byteLength;
+    if (length === undefined) throw new ParseError(FORMAT, {}, `buffer ${i} ('${uri}') was not given`);
+    if (length < buffer.byteLength) throw new ParseError(FORMAT, {}, `buffer ${i} is ${length} bytes, shorter than its byteLength ${buffer.byteLength}`);
+    return buffer.byteLength;
+  });
+  const viewLengths = (json.bufferViews ?? []).map((view, i) => {
+    const offset = view.byteOffset ?? 0;
+    const meshopt = view.extensions?.EXT_meshopt_compression as { buffer: number; byteOffset?: number; byteLength: number } | undefined;
+    const source = meshopt ? { buffer: meshopt.buffer, offset: meshopt.byteOffset ?? 0, length: meshopt.byteLength } : { buffer: view.buffer, offset, length: view.byteLength };
+    const available = bufferLengths[source.buffer];
+    if (available === undefined) throw new ParseError(FORMAT, {}, `bufferView ${i} refers to buffer ${source.buffer}, which does not exist (there are ${bufferLengths.length})`);
+    if (!(source.offset >= 0 && source.length >= 0 && source.offset + source.length <= available)) {
+      throw new ParseError(FORMAT, {}, `bufferView ${i} needs bytes ${source.offset}…${source.offset + source.length} of buffer ${source.buffer}, which has ${available}`);
+    }
+    return view.byteLength;
+  });
+  (json.accessors ?? []).forEach((accessor, i) => {
+    const size = componentBytes[accessor.componentType];
+    const items = typeItems[accessor.type];
+    if (!size || !items) throw new ParseError(FORMAT, {}, `accessor ${i} has componentType ${accessor.componentType} and type ${accessor.type}, which glTF does not define`);
+    if (!(Number.isInteger(accessor.count) && accessor.count >= 0 && accessor.count <= MAX_ACCESSOR_COUNT)) {
+      throw new ParseError(FORMAT, {}, `accessor ${i} claims ${accessor.count} elements (at most ${MAX_ACCESSOR_COUNT} are read)`);
+    }
+    if (accessor.bufferView === undefined) return;
+    const length = viewLengths[accessor.bufferView];
+    if (length === undefined) throw new ParseError(FORMAT, {}, `accessor ${i} refers to bufferView ${accessor.bufferView}, which does not exist`);
+    const stride = json.bufferViews![accessor.bufferView].byteStride ?? size * items;
+    const end = (accessor.byteOffset ?? 0) + (accessor.count === 0 ? 0 : (accessor.count - 1) * stride + size * items);
+    if (end > length) throw new ParseError(FORMAT, {}, `accessor ${i} needs ${end} bytes of bufferView ${accessor.bufferView}, which has ${length}`);
+  });
+}
+
+function dataUriLength(uri: string): number {
+  const comma = uri.indexOf(',');
+  const data = uri.slice(comma + 1);
+  if (!uri.slice(0, comma).endsWith(';base64')) return decodeURIComponent(data).length;
+  const padding = data.endsWith('==') ? 2 : data.endsWith('=') ? 1 : 0;
+  return Math.floor((data.length * 3) / 4) - padding;
+}
+
+/** Decoders are loaded only for a file that is compressed with them. */
+async function registerDecoders(io: WebIO, used: string[]): Promise<void> {
+  if (used.includes('EXT_meshopt_compression')) {
+    const { MeshoptDecoder } = await import('meshoptimizer/decoder');
+    await MeshoptDecoder.ready;
+    io.registerDependencies({ 'meshopt.decoder': MeshoptDecoder });
+  }
+  if (used.includes('KHR_draco_mesh_compression')) {
+    // a name the page's bundler does not follow: the decoder package is for Node, and a page cannot resolve it
+    const name = 'draco3dgltf';
+    let draco: { default?: DracoModule } & DracoModule;
+    try {
+      draco = (await import(/* @vite-ignore */ name)) as typeof draco;
+    } catch {
+      throw new ParseError(FORMAT, {}, 'the file is Draco-compressed, which only the command line decodes for now: `halfedge-lab convert FILE.glb OUT.glb` writes it uncompressed');
+    }
+    io.registerDependencies({ 'draco3d.decoder': await (draco.default ?? draco).createDecoderModule() });
+  }
+}
+
+interface DracoModule {
+  createDecoderModule(): Promise<unknown>;
+}
+
+/** glTF-Transform's warnings become notes for the report (an unresolved image, an unknown extension). */
+function noteLogger(notes: string[]): Logger {
+  const ignore = () => {};
+  return { debug: ignore, info: ignore, warn: (text: string) => notes.push(text), error: (text: string) => notes.push(text) } as unknown as Logger;
+}
+
+// -------------------------------------------------------------------------------------------------
+// Meshes to a soup
+
+const MODE_NAMES = ['points', 'lines', 'line loops', 'line strips'];
+
+interface Gathered {
+  positions: number[];
+  corners: number[];
+  texcoords: number[];
+  normals: number[];
+  hasTexcoords: boolean;
+  hasNormals: boolean;
+}
+
+function gatherMeshes(gltf: Document, binary: boolean, notes: string[], tolerance: number): MeshFile {
+  const root = gltf.getRoot();
+  const scene = root.getDefaultScene() ?? root.listScenes()[0];
+  if (!scene) throw new ParseError(FORMAT, {}, 'the file has no scene, so no mesh is placed');
+  const out: Gathered = { positions: [], corners: [], texcoords: [], normals: [], hasTexcoords: false, hasNormals: false };
+  let fileVertices = 0;
+  let welded = 0;
+  let skipped = 0;
+  const faceStarts = [0];
+  scene.traverse((node) => {
+    const mesh = node.getMesh();
+    if (!mesh) return;
+    const name = node.getName() || mesh.getName() || `node ${root.listNodes().indexOf(node)}`;
+    const matrix = node.getWorldMatrix();
+    const normalMatrix = cofactor3(matrix);
+    const mirrored = determinant3(matrix) < 0;
+    // this node's vertices, then its triangles as indices into them
+    const local: Gathered = { positions: [], corners: [], texcoords: [], normals: [], hasTexcoords: false, hasNormals: false };
+    const localTexcoord: (number[] | null)[] = [];
+    const localNormal: (number[] | null)[] = [];
+    for (const primitive of mesh.listPrimitives()) {
+      const mode = primitive.getMode();
+      if (mode < Primitive.Mode.TRIANGLES) {
+        notes.push(`${name}: a primitive of ${MODE_NAMES[mode] ?? `mode ${mode}`} was skipped (only triangles make faces)`);
+        continue;
+      }
+      const position = primitive.getAttribute('POSITION');
+      if (!position) {
+        notes.push(`${name}: a primitive without POSITION was skipped`);
+        continue;
+      }
+      const base = local.positions.length / 3;
+      const count = position.getCount();
+      const texcoord = primitive.getAttribute('TEXCOORD_0');
+      const normal = primitive.getAttribute('NORMAL');
+      for (const [semantic, accessor, type] of [['POSITION', position, 'VEC3'], ['NORMAL', normal, 'VEC3'], ['TEXCOORD_0', texcoord, 'VEC2']] as const) {
+        if (accessor && accessor.getType() !== type) throw new ParseError(FORMAT, {}, `${name}: ${semantic} is accessor ${root.listAccessors().indexOf(accessor)} of type ${accessor.getType()}; glTF says ${type}`);
+        if (accessor && accessor.getCount() !== count) throw new ParseError(FORMAT, {}, `${name}: ${semantic} has ${accessor.getCount()} elements but POSITION has ${count}`);
+      }
+      const p = [0, 0, 0];
+      for (let i = 0; i < count; i++) {
+        position.getElement(i, p);
+        local.positions.push(...transformPoint(matrix, p));
+        localTexcoord.push(texcoord ? texcoord.getElement(i, [0, 0]) : null);
+        localNormal.push(normal ? transformNormal(normalMatrix, normal.getElement(i, [0, 0, 0])) : null);
+      }
+      local.hasTexcoords ||= texcoord !== null;
+      local.hasNormals ||= normal !== null;
+      const indices = primitive.getIndices();
+      const indexCount = indices ? indices.getCount() : count;
+      const index = (k: number) => {
+        const value = indices ? indices.getScalar(k) : k;
+        if (!(value >= 0 && value < count)) {
+          throw new ParseError(FORMAT, {}, `${name}: index ${k} of accessor ${root.listAccessors().indexOf(indices!)} is ${value}, but the primitive has ${count} vertices`);
+        }
+        return base + value;
+      };
+      const triangle = (a: number, b: number, c: number) => {
+        if (a === b || b === c || c === a) return void skipped++;
+        if (mirrored) local.corners.push(a, c, b);
+        else local.corners.push(a, b, c);
+      };
+      if (mode === Primitive.Mode.TRIANGLES) for (let k = 0; k + 2 < indexCount; k += 3) triangle(index(k), index(k + 1), index(k + 2));
+      else if (mode === Primitive.Mode.TRIANGLE_STRIP) for (let k = 0; k + 2 < indexCount; k++) k % 2 === 0 ? triangle(index(k), index(k + 1), index(k + 2)) : triangle(index(k + 1), index(k), index(k + 2));
+      else for (let k = 1; k + 1 < indexCount; k++) triangle(index(0), index(k), index(k + 1));
+    }
+    fileVertices += local.positions.length / 3;
+    // the node's vertices welded by position: seams close, each corner keeps its own values
+    const weld = weldPositions(local.positions, tolerance);
+    const offset = out.positions.length / 3;
+    welded += local.positions.length / 3 - weld.positions.length / 3;
+    for (const x of weld.positions) out.positions.push(x);
+    const firstFace = faceStarts.length - 1;
+    for (let k = 0; k < local.corners.length; k++) {
+      const vertex = local.corners[k];
+      out.corners.push(offset + weld.remap[vertex]);
+      out.texcoords.push(...(localTexcoord[vertex] ?? [0, 0]));
+      out.normals.push(...(localNormal[vertex] ?? [0, 0, 0]));
+      if (k % 3 === 2) faceStarts.push(out.corners.length);
+    }
+    out.hasTexcoords ||= local.hasTexcoords;
+    out.hasNormals ||= local.hasNormals;
+    notes.push(`${name}: ${weld.positions.length / 3} vertices, ${faceStarts.length - 1 - firstFace} triangles (faces ${firstFace}…${faceStarts.length - 2})`);
+  });
+  if (faceStarts.length === 1) throw new ParseError(FORMAT, {}, 'the default scene has no triangles');
+  if (welded > 0) {
+    const how = tolerance > 0 ? `within ${tolerance}` : 'at equal positions';
+    notes.unshift(`welded ${fileVertices} glTF vertices into ${out.positions.length / 3} (${welded} joined ${how}, where the file splits a vertex along a seam of normals or texture coordinates); those values are kept per face corner`);
+  }
+  if (skipped > 0) notes.push(`${skipped} triangles with a repeated index were skipped (strips use them as joints)`);
+  const cornerAttributes: SoupAttribute[] = [];
+  if (out.hasTexcoords) cornerAttributes.push({ name: 'texcoord', itemSize: 2, data: Float32Array.from(out.texcoords) });
+  if (out.hasNormals) cornerAttributes.push({ name: 'normal', itemSize: 3, data: Float32Array.from(out.normals) });
+  return {
+    format: 'gltf',
+    encoding: binary ? 'binary_little_endian' : 'ascii',
+    soup: { positions: Float64Array.from(out.positions), faceStarts: Uint32Array.from(faceStarts), faceIndices: Uint32Array.from(out.corners), cornerAttributes },
+    counts: { vertices: fileVertices, faces: faceStarts.length - 1 },
+    comments: [],
+    notes,
+  };
+}
+
+function transformPoint(m: ArrayLike<number>, [x, y, z]: number[]): number[] {
+  return [m[0] * x + m[4] * y + m[8] * z + m[12], m[1] * x + m[5] * y + m[9] * z + m[13], m[2] * x + m[6] * y + m[10] * z + m[14]];
+}
+
+/** The cofactor matrix of the upper 3 × 3 (the inverse transpose times the determinant): it carries normals. */
+function cofactor3(m: ArrayLike<number>): number[] {
+  const [a, b, c, d, e, f, g, h, i] = [m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]];
+  return [e * i - f * h, f * g - d * i, d * h - e * g, c * h - b * i, a * i - c * g, b * g - a * h, b * f - c * e, c * d - a * f, a * e - b * d];
+}
+
+function determinant3(m: ArrayLike<number>): number {
+  return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[4] * (m[1] * m[10] - m[2] * m[9]) + m[8] * (m[1] * m[6] - m[2] * m[5]);
+}
+
+function transformNormal(c: number[], [x, y, z]: number[]): number[] {
+  const n = [c[0] * x + c[3] * y + c[6] * z, c[1] * x + c[4] * y + c[7] * z, c[2] * x + c[5] * y + c[8] * z];
+  const length = Math.hypot(n[0], n[1], n[2]);
+  return length > 0 ? n.map((v) => v / length) : n;
+}
+
+// -------------------------------------------------------------------------------------------------
+// Writing
+
+/**
+ * The mesh as a `.glb`: one node, one triangle primitive. Faces are triangulated (glTF holds only
+ * triangles); a vertex is split wherever its corners carry different normals or texture
+ * coordinates (halfedge attributes `normal` and `texcoord`), as glTF needs.
+ */
+export async function writeGlb(mesh: HalfedgeMesh): Promise<Uint8Array> {
+  const { heNext, heVertex, fHalfedge, positions } = mesh;
+  const texcoord = mesh.halfedgeAttributes.get('texcoord');
+  const normal = mesh.halfedgeAttributes.get('normal');
+  const vertexOf = new Map<string, number>();
+  const outPositions: number[] = [];
+  const outTexcoords: number[] = [];
+  const outNormals: number[] = [];
+  const indices: number[] = [];
+  const cornerVertex = (h: number): number => {
+    const v = heVertex[h];
+    const uv = texcoord ? Array.from(texcoord.data.subarray(2 * h, 2 * h + 2)) : [];
+    const n = normal ? Array.from(normal.data.subarray(3 * h, 3 * h + 3)) : [];
+    const key = texcoord || normal ? `${v} ${uv.join(' ')} ${n.join(' ')}` : String(v);
+    let out = vertexOf.get(key);
+    if (out === undefined) {
+      out = outPositions.length / 3;
+      vertexOf.set(key, out);
+      outPositions.push(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+      outTexcoords.push(...uv);
+      outNormals.push(...n);
+    }
+    return out;
+  };
+  for (const f of mesh.faces()) {
+    const loop: number[] = [];
+    const start = fHalfedge[f];
+    let h = start;
+    do {
+      loop.push(h);
+      h = heNext[h];
+    } while (h !== start && loop.length <= mesh.halfedgeSlots);
+    for (const corner of faceCornerTriangles(mesh, f)) indices.push(cornerVertex(loop[corner]));
+  }
+  // a vertex no face uses is written too (no triangle names it), so reading back keeps it
+  const used = new Uint8Array(mesh.vertexSlots);
+  for (const h of mesh.halfedges()) if (mesh.heFace[h] !== -1) used[heVertex[h]] = 1;
+  for (const v of mesh.vertices()) {
+    if (used[v]) continue;
+    outPositions.push(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]);
+    if (texcoord) outTexcoords.push(0, 0);
+    if (normal) outNormals.push(0, 0, 0);
+  }
+  const gltf = new Document();
+  const buffer = gltf.createBuffer();
+  const primitive = gltf
+    .createPrimitive()
+    .setAttribute('POSITION', gltf.createAccessor().setType('VEC3').setArray(Float32Array.from(outPositions)).setBuffer(buffer))
+    .setIndices(gltf.createAccessor().setType('SCALAR').setArray(Uint32Array.from(indices)).setBuffer(buffer));
+  if (texcoord) primitive.setAttribute('TEXCOORD_0', gltf.createAccessor().setType('VEC2').setArray(Float32Array.from(outTexcoords)).setBuffer(buffer));
+  if (normal) primitive.setAttribute('NORMAL', gltf.createAccessor().setType('VEC3').setArray(Float32Array.from(outNormals)).setBuffer(buffer));
+  const node = gltf.createNode('mesh').setMesh(gltf.createMesh('mesh').addPrimitive(primitive));
+  gltf.createScene('scene').addChild(node);
+  gltf.getRoot().setDefaultScene(gltf.getRoot().listScenes()[0]);
+  return new WebIO().writeBinary(gltf);
+}
