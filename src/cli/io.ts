@@ -1,6 +1,6 @@
 /** Reading and writing mesh files for the CLI, and turning failures into one line on stderr. */
 import { readFileSync, writeFileSync } from 'node:fs';
-import { basename } from 'node:path';
+import { basename, dirname, join } from 'node:path';
 import { parseArgs } from 'node:util';
 import {
   buildMesh,
@@ -10,10 +10,10 @@ import {
   meshToHalfedgeJSON,
   type MeshFile,
   ParseError,
-  readMesh,
+  readMeshAsync,
   TopologyError,
   writeFormatFromFileName,
-  writeMesh,
+  writeMeshAsync,
 } from '../index.js';
 
 /** Bad arguments or an unreadable file: exit status 2. */
@@ -26,15 +26,10 @@ export interface LoadedMesh extends BuildResult {
   file: MeshFile;
 }
 
-export function loadMesh(path: string): LoadedMesh {
-  let bytes: Uint8Array;
+export async function loadMesh(path: string): Promise<LoadedMesh> {
+  const bytes = readBytes(path);
   try {
-    bytes = readFileSync(path);
-  } catch (error) {
-    throw new UsageError(`cannot read ${path}: ${(error as NodeJS.ErrnoException).code ?? (error as Error).message}`);
-  }
-  try {
-    const file = readMesh(bytes, { fileName: basename(path) });
+    const file = await readMeshAsync(bytes, { fileName: basename(path), resources: gltfResources(path, bytes) });
     return { path, file, ...buildMesh(file.soup) };
   } catch (error) {
     // name the file: the parser only knows the place inside it
@@ -43,17 +38,49 @@ export function loadMesh(path: string): LoadedMesh {
   }
 }
 
-/** Writes `mesh` to `path` in the format its extension names (`.json`: the halfedge tables). */
-export function saveMesh(mesh: HalfedgeMesh, path: string, format?: string): void {
+function readBytes(path: string): Uint8Array<ArrayBuffer> {
+  try {
+    return readFileSync(path) as Uint8Array<ArrayBuffer>;
+  } catch (error) {
+    throw new UsageError(`cannot read ${path}: ${(error as NodeJS.ErrnoException).code ?? (error as Error).message}`);
+  }
+}
+
+/** The buffers a `.gltf` names, read from beside it (a `.glb` or any other file needs none). */
+function gltfResources(path: string, bytes: Uint8Array): Map<string, Uint8Array<ArrayBuffer>> | undefined {
+  if (!path.toLowerCase().endsWith('.gltf')) return undefined;
+  let uris: unknown[] = [];
+  try {
+    const json = JSON.parse(new TextDecoder().decode(bytes)) as { buffers?: { uri?: unknown }[] };
+    uris = (json.buffers ?? []).map((buffer) => buffer.uri);
+  } catch {
+    return undefined; // the reader says what is wrong with the JSON
+  }
+  const resources = new Map<string, Uint8Array<ArrayBuffer>>();
+  for (const uri of uris) {
+    // only files beside the .gltf or below it: a buffer cannot name /etc/passwd or ../../secret
+    if (typeof uri !== 'string' || uri.startsWith('data:') || uri.includes('..') || uri.startsWith('/') || uri.includes(':')) continue;
+    resources.set(uri, readBytes(join(dirname(path), decodeURIComponent(uri))));
+  }
+  return resources;
+}
+
+/** Writes `mesh` to `path` in the format its extension names (`.json`: the halfedge tables; `.glb`: binary glTF). */
+export async function saveMesh(mesh: HalfedgeMesh, path: string, format?: string): Promise<void> {
   let bytes: Uint8Array;
   if (format === 'json' || (!format && path.toLowerCase().endsWith('.json'))) {
     bytes = new TextEncoder().encode(JSON.stringify(meshToHalfedgeJSON(mesh)));
   } else {
-    const writeFormat = format ?? writeFormatFromFileName(path);
-    if (!writeFormat || !['ply', 'ply-binary', 'off', 'obj'].includes(writeFormat)) {
-      throw new UsageError(`cannot tell the output format of ${path}: use .ply, .off, .obj or .json, or --format`);
+    const writeFormat = format ?? (path.toLowerCase().endsWith('.glb') ? 'glb' : writeFormatFromFileName(path));
+    if (!writeFormat || !['ply', 'ply-binary', 'off', 'obj', 'glb'].includes(writeFormat)) {
+      throw new UsageError(`cannot tell the output format of ${path}: use .ply, .off, .obj, .glb or .json, or --format`);
     }
-    bytes = writeMesh(mesh, writeFormat as Parameters<typeof writeMesh>[1]);
+    try {
+      bytes = await writeMeshAsync(mesh, writeFormat as Parameters<typeof writeMeshAsync>[1]);
+    } catch (error) {
+      if (error instanceof InvalidInputError) throw new UsageError(`cannot write ${path}: ${error.message}`);
+      throw error;
+    }
   }
   try {
     writeFileSync(path, bytes);

@@ -216,11 +216,23 @@ export class App {
   // -----------------------------------------------------------------------------------------------
   // Opening meshes
 
+  /**
+   * Opens what was picked or dropped: one mesh file, or a `.gltf` with the files it names (its
+   * `.bin` buffers) picked or dropped together with it.
+   */
+  async openFiles(files: File[]): Promise<boolean> {
+    const main = files.find((f) => /\.gltf$/i.test(f.name)) ?? files.find((f) => !/\.(bin|png|jpe?g|webp|ktx2)$/i.test(f.name)) ?? files[0];
+    if (!main) return false;
+    const others = files.filter((f) => f !== main);
+    const resources = new Map(await Promise.all(others.map(async (f) => [f.name, new Uint8Array(await f.arrayBuffer())] as const)));
+    return this.openBytes(new Uint8Array(await main.arrayBuffer()), main.name, null, resources.size > 0 ? resources : undefined);
+  }
+
   /** Opens a file's bytes; `sample` names the sample model they are (null: a file of the user's). */
-  async openBytes(bytes: Uint8Array, name: string, sample: string | null = null): Promise<boolean> {
+  async openBytes(bytes: Uint8Array, name: string, sample: string | null = null, resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): Promise<boolean> {
     try {
       this.say(`Reading ${name}…`);
-      const snapshot = await this.client.open(bytes, name, sample);
+      const snapshot = await this.client.open(bytes, name, sample, resources);
       this.show(snapshot, true);
       const repairs = snapshot.report?.repairs ?? [];
       if (repairs.length > 0) this.announceRepairs(name, repairs);
@@ -809,8 +821,7 @@ export class App {
   private wireControls(): void {
     const fileInput = byId<HTMLInputElement>('file-input');
     fileInput.addEventListener('change', async () => {
-      const file = fileInput.files?.[0];
-      if (file) await this.openBytes(new Uint8Array(await file.arrayBuffer()), file.name);
+      await this.openFiles([...(fileInput.files ?? [])]);
       fileInput.value = '';
     });
     byId<HTMLSelectElement>('sample-select').addEventListener('change', (event) => void this.openSample((event.target as HTMLSelectElement).value));
@@ -842,8 +853,7 @@ export class App {
     window.addEventListener('drop', async (event) => {
       event.preventDefault();
       hint.hidden = true;
-      const file = event.dataTransfer?.files[0];
-      if (file) await this.openBytes(new Uint8Array(await file.arrayBuffer()), file.name);
+      await this.openFiles([...(event.dataTransfer?.files ?? [])]);
     });
 
     // a click picks; a drag orbits

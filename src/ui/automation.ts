@@ -24,9 +24,17 @@ export function automation(app: App) {
   return {
     /** Resolves once the first mesh is drawn. */
     ready: app.ready,
-    /** Opens a file from bytes; resolves true when it loaded, false on a parse error (shown on the page). */
-    open: (bytes: Uint8Array | ArrayBuffer | number[], name: string) =>
-      app.openBytes(bytes instanceof Uint8Array ? bytes : new Uint8Array(bytes as ArrayBuffer), name),
+    /**
+     * Opens a file from bytes; resolves true when it loaded, false on a parse error (shown on the
+     * page). `files`: for a `.gltf`, the files it names (its `.bin`), by name.
+     */
+    open: (bytes: Uint8Array | ArrayBuffer | number[], name: string, files?: Record<string, Uint8Array | ArrayBuffer | number[]>) =>
+      app.openBytes(
+        bytesOf(bytes),
+        name,
+        null,
+        files ? new Map(Object.entries(files).map(([file, data]) => [file, bytesOf(data)])) : undefined,
+      ),
     /** Opens one of the sample models by file name (see `samples()`). */
     openSample: (file: string) => app.openSample(file),
     samples: () => app.samples.map((s) => s.file),
@@ -174,4 +182,8 @@ declare global {
   interface Window {
     halfedgeLab: HalfedgeLabAutomation;
   }
+}
+
+function bytesOf(data: Uint8Array | ArrayBuffer | number[]): Uint8Array<ArrayBuffer> {
+  return data instanceof Uint8Array ? (data as Uint8Array<ArrayBuffer>) : new Uint8Array(data as ArrayBuffer);
 }

@@ -1,14 +1,16 @@
 /** Parse and build one file: the work of the loader worker (and of tests, without a worker). */
 import { buildMesh, serializeMesh } from '../core/index.js';
-import { readMesh } from '../core/io/index.js';
+import { readMeshAsync } from '../core/io/index.js';
 import type { LoadedFile, ProgressListener } from './protocol.js';
 
 /** Parsing is most of the work; building the rest. */
 const READ_SHARE = 0.6;
 
-export function loadFile(bytes: Uint8Array, name: string, onProgress?: ProgressListener): LoadedFile {
-  const file = readMesh(bytes, {
+/** `resources`: the files a `.gltf` names (its buffers), opened together with it. */
+export async function loadFile(bytes: Uint8Array, name: string, onProgress?: ProgressListener, resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): Promise<LoadedFile> {
+  const file = await readMeshAsync(bytes, {
     fileName: name,
+    resources,
     onProgress: (fraction) => onProgress?.({ label: `reading ${name}`, fraction: READ_SHARE * fraction }),
   });
   const { mesh, report } = buildMesh(file.soup, {

@@ -6,8 +6,8 @@ import { installErrorTransfer, type LoaderApi, transferables } from './protocol.
 installErrorTransfer();
 
 const loader: LoaderApi = {
-  async load(bytes, name, onProgress) {
-    const loaded = loadFile(bytes, name, throttle(onProgress));
+  async load(bytes, name, onProgress, resources) {
+    const loaded = await loadFile(bytes, name, throttle(onProgress), resources);
     return transfer(loaded, transferables(loaded));
   },
 };

@@ -208,7 +208,8 @@ export interface SessionApi {
 
 /** The loader worker: parses and builds one file, then is thrown away (cancel = terminate it). */
 export interface LoaderApi {
-  load(bytes: Uint8Array, name: string, onProgress: ProgressListener): Promise<LoadedFile>;
+  /** `resources`: the files a `.gltf` names, by name. */
+  load(bytes: Uint8Array, name: string, onProgress: ProgressListener, resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): Promise<LoadedFile>;
 }
 
 /**

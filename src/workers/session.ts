@@ -31,7 +31,7 @@ import {
   serializeMesh,
   TopologyError,
 } from '../core/index.js';
-import { writeMesh, type WriteFormat } from '../core/io/index.js';
+import { type WriteFormat, writeMeshAsync } from '../core/io/index.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
 import { EDIT_ROOM, History } from './history.js';
 import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails } from './protocol.js';
@@ -216,8 +216,9 @@ export class EditingSession {
     return this.send(change, from);
   }
 
-  exportMesh(format: string): Uint8Array {
-    return writeMesh(this.stepping?.working ?? this.currentMesh(), format as WriteFormat);
+  /** The mesh as a file: `ply`, `ply-binary`, `off`, `obj` or `glb`. */
+  exportMesh(format: string): Promise<Uint8Array> {
+    return writeMeshAsync(this.stepping?.working ?? this.currentMesh(), format as WriteFormat | 'glb');
   }
 
   /** The fingerprint of the mesh of the last snapshot: a test that the page's copy equals it. */

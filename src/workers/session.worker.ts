@@ -24,7 +24,7 @@ const api: SessionApi = {
   redo: async () => send(session.redo()),
   jump: async (index) => send(session.jump(index)),
   exportMesh: async (format) => {
-    const bytes = session.exportMesh(format);
+    const bytes = await session.exportMesh(format);
     return transfer(bytes, [bytes.buffer as ArrayBuffer]);
   },
   setProgressListener: async (listener) => session.setProgressListener(listener),

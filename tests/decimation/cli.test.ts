@@ -11,7 +11,7 @@ import { validate } from '../../src/core/validate.js';
 import { meshOf } from './helpers.js';
 
 describe('decimate IN OUT --faces N [--max-error D]', () => {
-  it('reads the files, the face count and the error limit', () => {
+  it('reads the files, the face count and the error limit', async () => {
     expect(parseDecimateArguments(['in.ply', 'out.obj', '--faces', '500'])).toEqual({
       input: 'in.ply',
       output: 'out.obj',
@@ -35,7 +35,7 @@ describe('decimate IN OUT --faces N [--max-error D]', () => {
     expect(() => parseDecimateArguments(args)).toThrow(message);
   });
 
-  it('decimates and compacts a mesh, ready for a file', () => {
+  it('decimates and compacts a mesh, ready for a file', async () => {
     const mesh = meshOf(uvSphere(10, 16));
     expect(decimateLoadedMesh(mesh, { targetFaces: 40 })).toBeNull();
     expect(mesh.isCompact).toBe(true);
@@ -47,22 +47,22 @@ describe('decimate IN OUT --faces N [--max-error D]', () => {
     const dir = mkdtempSync(join(tmpdir(), 'halfedge-lab-decimate-'));
     afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
-    it('writes a sphere of 100 triangles, closed, from one of 480', () => {
+    it('writes a sphere of 100 triangles, closed, from one of 480', async () => {
       const input = join(dir, 'sphere.ply');
       const output = join(dir, 'coarse.obj');
       writeFileSync(input, writeMesh(meshOf(uvSphere(16, 16)), 'ply-binary'));
-      expect(decimateCommand.run([input, output, '--faces', '100'])).toBe(0);
-      const { mesh, report } = loadMesh(output);
+      expect(await decimateCommand.run([input, output, '--faces', '100'])).toBe(0);
+      const { mesh, report } = await loadMesh(output);
       expect(report.repairs).toEqual([]);
       expect(mesh.nFaces).toBe(100);
       expect(meshStats(mesh)).toMatchObject({ closed: true, eulerCharacteristic: 2 });
     });
 
-    it('prints the reason on one line and exits with status 2 on quads', () => {
+    it('prints the reason on one line and exits with status 2 on quads', async () => {
       const input = join(dir, 'cube.off');
       writeFileSync(input, writeMesh(meshOf(cube()), 'off'));
       const stderr = vi.spyOn(console, 'error').mockImplementation(() => {});
-      expect(decimateCommand.run([input, join(dir, 'never.off'), '--faces', '4'])).toBe(2);
+      expect(await decimateCommand.run([input, join(dir, 'never.off'), '--faces', '4'])).toBe(2);
       expect(stderr.mock.calls).toEqual([['halfedge-lab: decimation needs triangles; f0 is a quad. Triangulate the mesh first.']]);
       stderr.mockRestore();
     });

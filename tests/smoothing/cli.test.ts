@@ -10,7 +10,7 @@ import { cube, uvSphere } from '../../src/core/shapes.js';
 import { addNoise, meshOf } from './helpers.js';
 
 describe('smooth IN OUT [--method M] [--iterations N] [--lambda X] [--mu X] [--boundary B]', () => {
-  it('reads the files and options, with Taubin and the library defaults when not given', () => {
+  it('reads the files and options, with Taubin and the library defaults when not given', async () => {
     expect(parseSmoothArguments(['in.ply', 'out.obj'])).toEqual({
       input: 'in.ply',
       output: 'out.obj',
@@ -35,7 +35,7 @@ describe('smooth IN OUT [--method M] [--iterations N] [--lambda X] [--mu X] [--b
     expect(() => parseSmoothArguments(args)).toThrow(message);
   });
 
-  it('says in one sentence why the cotangent method does not apply to quads, and changes nothing', () => {
+  it('says in one sentence why the cotangent method does not apply to quads, and changes nothing', async () => {
     const mesh = meshOf(cube());
     const before = mesh.positions.slice();
     expect(smoothLoadedMesh(mesh, { method: 'cotan' })).toMatch(/^cotangent smoothing needs triangles; f0 is a quad\./);
@@ -46,14 +46,14 @@ describe('smooth IN OUT [--method M] [--iterations N] [--lambda X] [--mu X] [--b
     const dir = mkdtempSync(join(tmpdir(), 'halfedge-lab-smooth-'));
     afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
-    it('writes a smoother sphere with the same connectivity', () => {
+    it('writes a smoother sphere with the same connectivity', async () => {
       const noisy = meshOf(uvSphere(12, 24));
       addNoise(noisy, 5, 0.03);
       const input = join(dir, 'noisy.ply');
       const output = join(dir, 'smooth.off');
       writeFileSync(input, writeMesh(noisy, 'ply'));
-      expect(smoothCommand.run([input, output, '--method', 'taubin', '--iterations', '20'])).toBe(0);
-      const { mesh } = loadMesh(output);
+      expect(await smoothCommand.run([input, output, '--method', 'taubin', '--iterations', '20'])).toBe(0);
+      const { mesh } = await loadMesh(output);
       expect([mesh.nVertices, mesh.nFaces]).toEqual([noisy.nVertices, noisy.nFaces]);
       expect(mesh.heVertex).toEqual(noisy.heVertex);
       const spread = (m: typeof mesh) => {
@@ -64,17 +64,17 @@ describe('smooth IN OUT [--method M] [--iterations N] [--lambda X] [--mu X] [--b
       expect(Math.abs(signedVolume(mesh) / signedVolume(noisy) - 1)).toBeLessThan(0.05);
     });
 
-    it('prints the reason on one line and exits with status 2 when the method does not apply', () => {
+    it('prints the reason on one line and exits with status 2 when the method does not apply', async () => {
       const input = join(dir, 'cube.off');
       const output = join(dir, 'never.off');
       writeFileSync(input, writeMesh(meshOf(cube()), 'off'));
       const stderr = vi.spyOn(console, 'error').mockImplementation(() => {});
-      expect(smoothCommand.run([input, output, '--method', 'cotan'])).toBe(2);
+      expect(await smoothCommand.run([input, output, '--method', 'cotan'])).toBe(2);
       expect(stderr.mock.calls).toEqual([
         ['halfedge-lab: cotangent smoothing needs triangles; f0 is a quad. Use the uniform Laplacian or Taubin, or triangulate the mesh first.'],
       ]);
       stderr.mockRestore();
-      expect(() => loadMesh(output)).toThrow(UsageError);
+      await expect(loadMesh(output)).rejects.toThrow(UsageError);
     });
   });
 });

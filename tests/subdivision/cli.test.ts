@@ -12,7 +12,7 @@ vi.mock('../../src/cli/io.js', async (importOriginal) => ({
 }));
 
 describe('subdivide SCHEME IN OUT [--levels N]', () => {
-  it('reads the scheme, the files and the levels (1 when not given)', () => {
+  it('reads the scheme, the files and the levels (1 when not given)', async () => {
     expect(parseSubdivideArguments(['loop', 'in.ply', 'out.ply'])).toEqual({ scheme: 'loop', input: 'in.ply', output: 'out.ply', levels: 1 });
     expect(parseSubdivideArguments(['sqrt3', 'a.off', 'b.obj', '--levels', '3']).levels).toBe(3);
   });
@@ -29,7 +29,7 @@ describe('subdivide SCHEME IN OUT [--levels N]', () => {
     expect(() => parseSubdivideArguments(args)).toThrow(message);
   });
 
-  it('subdivides a loaded mesh, or says in one sentence why the scheme does not apply', () => {
+  it('subdivides a loaded mesh, or says in one sentence why the scheme does not apply', async () => {
     const quads = meshOf(cube());
     const before = meshArrays(quads);
     expect(subdivideLoadedMesh(quads, 'loop', 1)).toBe('Loop subdivision needs triangles; f0 is a quad. Triangulate the mesh first.');
@@ -38,19 +38,19 @@ describe('subdivide SCHEME IN OUT [--levels N]', () => {
     expect(quads.nFaces).toBe(6 * 4 * 4);
   });
 
-  it('runs: load, subdivide, save; exit status 0', () => {
-    vi.mocked(loadMesh).mockReturnValue({ mesh: meshOf(tetrahedron()) } as ReturnType<typeof loadMesh>);
-    expect(subdivideCommand.run(['butterfly', 'in.ply', 'out.ply', '--levels', '2'])).toBe(0);
+  it('runs: load, subdivide, save; exit status 0', async () => {
+    vi.mocked(loadMesh).mockResolvedValue({ mesh: meshOf(tetrahedron()) } as Awaited<ReturnType<typeof loadMesh>>);
+    expect(await subdivideCommand.run(['butterfly', 'in.ply', 'out.ply', '--levels', '2'])).toBe(0);
     expect(loadMesh).toHaveBeenCalledWith('in.ply');
     const [saved, path] = vi.mocked(saveMesh).mock.lastCall as [HalfedgeMesh, string];
     expect([saved.nFaces, path]).toEqual([4 * 16, 'out.ply']);
   });
 
-  it('prints the reason on one line and exits with status 2 when the scheme does not apply', () => {
-    vi.mocked(loadMesh).mockReturnValue({ mesh: meshOf(cube()) } as ReturnType<typeof loadMesh>);
+  it('prints the reason on one line and exits with status 2 when the scheme does not apply', async () => {
+    vi.mocked(loadMesh).mockResolvedValue({ mesh: meshOf(cube()) } as Awaited<ReturnType<typeof loadMesh>>);
     vi.mocked(saveMesh).mockClear();
     const stderr = vi.spyOn(console, 'error').mockImplementation(() => {});
-    expect(subdivideCommand.run(['sqrt3', 'cube.off', 'out.off'])).toBe(2);
+    expect(await subdivideCommand.run(['sqrt3', 'cube.off', 'out.off'])).toBe(2);
     expect(stderr.mock.calls).toEqual([['halfedge-lab: √3 subdivision needs triangles; f0 is a quad. Triangulate the mesh first.']]);
     expect(saveMesh).not.toHaveBeenCalled();
     stderr.mockRestore();

@@ -53,12 +53,12 @@ describe('the page copy, patched', () => {
   it.each([
     ['a sphere of triangles', () => writeSoup(uvSphere(12, 16), 'off')],
     ['a torus of quads', () => writeSoup(torus(8, 6), 'off')],
-  ])('stays equal to the session’s mesh through random edits, undos, redos and phases (%s)', (_, file) => {
+  ])('stays equal to the session’s mesh through random edits, undos, redos and phases (%s)', async (_, file) => {
     const random = seededRandom(20261125);
     const editsPatched: boolean[] = [];
     const startsPatched: boolean[] = [];
     const session = new EditingSession();
-    session.adopt(loadFile(file(), 'model.off'));
+    session.adopt(await loadFile(file(), 'model.off'));
     const page = pageSession(session);
     const check = (shown: PageSnapshot, step: string) => {
       expect(meshFingerprint(shown.mesh), step).toBe(session.fingerprint());

@@ -23,9 +23,9 @@ import { EditingSession } from '../../src/workers/session.js';
 import { meshContents } from '../core/contents.js';
 import { type PageSession, pageSession } from './page-session.js';
 
-function sessionWith(bytes: Uint8Array, name: string): PageSession & { adopt: EditingSession['adopt']; setProgressListener: EditingSession['setProgressListener']; exportMesh: EditingSession['exportMesh']; historyBytes: () => number } {
+async function sessionWith(bytes: Uint8Array, name: string): Promise<PageSession & { adopt: EditingSession['adopt']; setProgressListener: EditingSession['setProgressListener']; exportMesh: EditingSession['exportMesh']; historyBytes: () => number }> {
   const session = new EditingSession();
-  session.adopt(loadFile(bytes, name));
+  session.adopt(await loadFile(bytes, name));
   const page = pageSession(session);
   return {
     ...page,
@@ -39,8 +39,8 @@ function sessionWith(bytes: Uint8Array, name: string): PageSession & { adopt: Ed
 const cubeFile = () => writeSoup(cube(), 'off');
 
 describe('EditingSession', () => {
-  it('opens a file into the first history entry and snapshots it', () => {
-    const snapshot = sessionWith(cubeFile(), 'cube.off').snapshot();
+  it('opens a file into the first history entry and snapshots it', async () => {
+    const snapshot = (await sessionWith(cubeFile(), 'cube.off')).snapshot();
     expect(snapshot.stats.faces).toBe(6);
     expect(snapshot.problems).toEqual([]);
     expect(snapshot.file?.name).toBe('cube.off');
@@ -53,8 +53,8 @@ describe('EditingSession', () => {
     expect(Array.from(snapshot.render.triangleFace.subarray(0, 4))).toEqual([0, 0, 1, 1]);
   });
 
-  it('steps Loop subdivision phase by phase, valid after each, then adds it to the history', () => {
-    const session = sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
+  it('steps Loop subdivision phase by phase, valid after each, then adds it to the history', async () => {
+    const session = await sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
     let snapshot = session.start({ kind: 'subdivide', scheme: 'loop' });
     expect(snapshot.stepping).toEqual({ label: 'Loop subdivision', phases: 0, total: 4 });
     const names: string[] = [];
@@ -76,8 +76,8 @@ describe('EditingSession', () => {
     expect(new Set(names).size).toBe(4);
   });
 
-  it('gives the same mesh stepping as the library straight through', () => {
-    const session = sessionWith(writeSoup(torus(6, 4), 'off'), 't.off');
+  it('gives the same mesh stepping as the library straight through', async () => {
+    const session = await sessionWith(writeSoup(torus(6, 4), 'off'), 't.off');
     session.start({ kind: 'subdivide', scheme: 'catmull-clark' });
     let snapshot = session.snapshot();
     while (session.snapshot().stepping) snapshot = session.step();
@@ -86,8 +86,8 @@ describe('EditingSession', () => {
     expect(meshContents(snapshot.mesh)).toEqual(meshContents(mesh));
   });
 
-  it('counts √3 levels, so the boundary of an open mesh is split on every second one', () => {
-    const session = sessionWith(writeSoup(disk(1), 'off'), 'disk.off');
+  it('counts √3 levels, so the boundary of an open mesh is split on every second one', async () => {
+    const session = await sessionWith(writeSoup(disk(1), 'off'), 'disk.off');
     const boundaryEdges = () => session.snapshot().stats.boundaryEdges;
     expect(boundaryEdges()).toBe(6);
     for (const [level, phases, boundary] of [[0, 3, 6], [1, 5, 18], [2, 3, 18]] as const) {
@@ -99,8 +99,8 @@ describe('EditingSession', () => {
     }
   });
 
-  it('smooths in phases and keeps only the moved positions in the history', () => {
-    const session = sessionWith(writeSoup(uvSphere(20, 30), 'ply-binary'), 'sphere.ply');
+  it('smooths in phases and keeps only the moved positions in the history', async () => {
+    const session = await sessionWith(writeSoup(uvSphere(20, 30), 'ply-binary'), 'sphere.ply');
     const opened = session.historyBytes();
     const started = session.start({ kind: 'smooth', options: { method: 'taubin', iterations: 2 } });
     expect(started.stepping).toEqual({ label: 'Taubin smoothing, 2 iterations', phases: 0, total: 4 });
@@ -116,8 +116,8 @@ describe('EditingSession', () => {
     expect(session.patched.slice(-6)).toEqual([true, true, true, true, true, false]);
   });
 
-  it('decimates in batches down to the target, refusing a quad mesh with the reason', () => {
-    const session = sessionWith(writeSoup(uvSphere(20, 30), 'off'), 'sphere.off');
+  it('decimates in batches down to the target, refusing a quad mesh with the reason', async () => {
+    const session = await sessionWith(writeSoup(uvSphere(20, 30), 'off'), 'sphere.off');
     expect(session.snapshot().unavailable.decimate).toBeNull();
     session.start({ kind: 'decimate', options: { targetFaces: 200 } });
     let snapshot = session.step();
@@ -126,13 +126,13 @@ describe('EditingSession', () => {
     expect(snapshot.stats.faces).toBeLessThanOrEqual(200);
     expect(snapshot.problems).toEqual([]);
     expect(snapshot.stats.genus).toBe(0);
-    const quads = sessionWith(cubeFile(), 'cube.off');
+    const quads = await sessionWith(cubeFile(), 'cube.off');
     expect(quads.snapshot().unavailable.decimate).toMatch(/needs triangles/);
     expect(() => quads.start({ kind: 'decimate', options: { targetFaces: 4 } })).toThrow(TopologyError);
   });
 
-  it('cancels a stepped operation back to the mesh before it', () => {
-    const session = sessionWith(cubeFile(), 'cube.off');
+  it('cancels a stepped operation back to the mesh before it', async () => {
+    const session = await sessionWith(cubeFile(), 'cube.off');
     session.start({ kind: 'subdivide', scheme: 'catmull-clark' });
     expect(session.step().stats.vertices).toBeGreaterThan(8);
     const snapshot = session.cancel();
@@ -141,8 +141,8 @@ describe('EditingSession', () => {
     expect(snapshot.history.items).toHaveLength(1);
   });
 
-  it('refuses an operation that does not apply, leaving everything as it was', () => {
-    const session = sessionWith(cubeFile(), 'cube.off');
+  it('refuses an operation that does not apply, leaving everything as it was', async () => {
+    const session = await sessionWith(cubeFile(), 'cube.off');
     const before = session.snapshot();
     expect(() => session.start({ kind: 'subdivide', scheme: 'loop' })).toThrow(TopologyError);
     expect(() => session.start({ kind: 'subdivide', scheme: 'loop' })).toThrow(/triangles/);
@@ -151,8 +151,8 @@ describe('EditingSession', () => {
     expect(after.history).toEqual(before.history);
   });
 
-  it('applies a local edit with its exact pointer diff, and undoes and redoes it', () => {
-    const session = sessionWith(writeSoup(torus(4, 4), 'off'), 't.off');
+  it('applies a local edit with its exact pointer diff, and undoes and redoes it', async () => {
+    const session = await sessionWith(writeSoup(torus(4, 4), 'off'), 't.off');
     const before = session.snapshot();
     const beforeMesh = before.mesh.clone();
     const edited = session.edit({ kind: 'poke-face', face: 3 });
@@ -170,7 +170,7 @@ describe('EditingSession', () => {
   });
 
   it('runs to the end in one call, reporting progress after each phase', async () => {
-    const session = sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
+    const session = await sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
     const events: number[] = [];
     session.setProgressListener((event) => events.push(event.fraction));
     session.start({ kind: 'subdivide', scheme: 'loop' });
@@ -180,7 +180,7 @@ describe('EditingSession', () => {
   });
 
   it('hears a cancel while running to the end', async () => {
-    const session = sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
+    const session = await sessionWith(writeSoup(tetrahedron(), 'off'), 'tet.off');
     session.start({ kind: 'subdivide', scheme: 'loop' });
     const running = session.runToEnd();
     session.cancel();
@@ -189,42 +189,42 @@ describe('EditingSession', () => {
     expect(snapshot.history.items).toHaveLength(1);
   });
 
-  it('exports the current mesh in the asked format', () => {
-    const session = sessionWith(cubeFile(), 'cube.off');
-    const text = new TextDecoder().decode(session.exportMesh('obj'));
+  it('exports the current mesh in the asked format', async () => {
+    const session = await sessionWith(cubeFile(), 'cube.off');
+    const text = new TextDecoder().decode(await session.exportMesh('obj'));
     expect(text.match(/^f /gm)).toHaveLength(6);
   });
 });
 
 describe('loading files for the session', () => {
-  it('raises the parser error with its place, and leaves the session untouched', () => {
-    const session = sessionWith(cubeFile(), 'cube.off');
+  it('raises the parser error with its place, and leaves the session untouched', async () => {
+    const session = await sessionWith(cubeFile(), 'cube.off');
     const bad = new TextEncoder().encode('OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n');
-    expect(() => session.adopt(loadFile(bad, 'bad.off'))).toThrow(ParseError);
-    expect(() => loadFile(bad, 'bad.off')).toThrow(/line 6/);
+    await expect(loadFile(bad, 'bad.off')).rejects.toThrow(ParseError);
+    await expect(loadFile(bad, 'bad.off')).rejects.toThrow(/line 6/);
     expect(session.snapshot().stats.faces).toBe(6);
   });
 
-  it('reports progress from reading to building, ending at 1', () => {
+  it('reports progress from reading to building, ending at 1', async () => {
     const fractions: number[] = [];
-    loadFile(writeSoup(torus(40, 40), 'ply-binary'), 't.ply', (event) => fractions.push(event.fraction));
+    await loadFile(writeSoup(torus(40, 40), 'ply-binary'), 't.ply', (event) => fractions.push(event.fraction));
     expect(fractions.at(-1)).toBe(1);
     expect([...fractions].sort((a, b) => a - b)).toEqual(fractions);
   });
 
   // (binary files are read in bulk, a few milliseconds per million rows: they need no finer steps)
-  it.each(['off', 'ply', 'obj'] as const)('reports a big %s text file in small steps, none a tenth of the work', (format) => {
+  it.each(['off', 'ply', 'obj'] as const)('reports a big %s text file in small steps, none a tenth of the work', async (format) => {
     const fractions: number[] = [];
-    loadFile(writeSoup(torus(600, 600), format), `big.${format}`, (event) => fractions.push(event.fraction));
+    await loadFile(writeSoup(torus(600, 600), format), `big.${format}`, (event) => fractions.push(event.fraction));
     const steps = fractions.slice(1).map((f, i) => f - fractions[i]!);
     expect(Math.max(...steps)).toBeLessThan(0.1);
   });
 });
 
 describe('snapshots cross the worker boundary by transfer', () => {
-  it('lists every buffer, and transferring empties the sender’s arrays', () => {
+  it('lists every buffer, and transferring empties the sender’s arrays', async () => {
     const session = new EditingSession();
-    session.adopt(loadFile(cubeFile(), 'cube.off'));
+    session.adopt(await loadFile(cubeFile(), 'cube.off'));
     const snapshot = session.snapshot();
     const buffers = transferables(snapshot);
     expect(buffers).toContain(snapshot.mesh!.heNext.buffer);
@@ -237,7 +237,7 @@ describe('snapshots cross the worker boundary by transfer', () => {
     expect(session.snapshot().mesh!.slots.edges).toBe(12);
   });
 
-  it('copies the drawing arrays for the picking worker only for a mesh past PICK_IN_WORKER_ABOVE triangles', () => {
+  it('copies the drawing arrays for the picking worker only for a mesh past PICK_IN_WORKER_ABOVE triangles', async () => {
     expect(new RenderLayout().full(buildMesh(cube()).mesh).picking).toBeNull();
     const big = buildMesh(uvSphere(200, 400)).mesh; // 2 · 400 · 199 triangles
     expect(big.nFaces).toBeGreaterThan(PICK_IN_WORKER_ABOVE);
@@ -249,14 +249,14 @@ describe('snapshots cross the worker boundary by transfer', () => {
     expect(picking.positions.buffer).not.toBe(render.positions.buffer);
     expect(picking.triangles.buffer).not.toBe(render.triangles.buffer);
     const session = new EditingSession();
-    session.adopt(loadFile(cubeFile(), 'cube.off'));
+    session.adopt(await loadFile(cubeFile(), 'cube.off'));
     const snapshot = session.snapshot();
     expect(transferables({ ...snapshot, render })).toEqual(expect.arrayContaining([picking.positions.buffer, picking.triangles.buffer]));
   });
 });
 
 describe('triangles for drawing', () => {
-  it('splits a non-convex face into triangles that stay inside it', () => {
+  it('splits a non-convex face into triangles that stay inside it', async () => {
     // an L-shaped hexagon listed from (2, 1): a fan from there would cover the notch
     const { mesh } = buildMesh(soupFromArrays([0, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 1, 2, 0, 0, 2, 0], [[2, 3, 4, 5, 0, 1]]));
     const render = new RenderLayout().full(mesh);

@@ -4,10 +4,10 @@ import type { Command } from './index.js';
 export const convert: Command = {
   usage: 'convert IN OUT [--format ply|ply-binary|off|obj|json]',
   summary: 'read, build (with repairs) and write; the format follows OUT',
-  run(args) {
+  async run(args) {
     const { values, positionals } = parseOptions(args, { format: { type: 'string' } }, 2);
-    const { mesh } = loadMesh(positionals[0]!);
-    saveMesh(mesh, positionals[1]!, values.format);
+    const { mesh } = await loadMesh(positionals[0]!);
+    await saveMesh(mesh, positionals[1]!, values.format);
     return 0;
   },
 };

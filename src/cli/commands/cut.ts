@@ -57,11 +57,11 @@ export function cutForFile(mesh: HalfedgeMesh, { plane, keep, cap }: Pick<CutArg
 export const cutCommand: Command = {
   usage: 'cut IN OUT --plane a,b,c,d [--keep above|below|both] [--no-cap]',
   summary: 'cut with the plane a·x + b·y + c·z + d = 0 (above: > 0), keep a side, cap the cut',
-  run(args) {
+  async run(args) {
     const options = parseCutArguments(args);
-    const { mesh } = loadMesh(options.input);
+    const { mesh } = await loadMesh(options.input);
     cutForFile(mesh, options);
-    saveMesh(mesh, options.output);
+    await saveMesh(mesh, options.output);
     return 0;
   },
 };

@@ -50,15 +50,15 @@ export function decimateLoadedMesh(mesh: HalfedgeMesh, options: DecimationOption
 export const decimateCommand: Command = {
   usage: 'decimate IN OUT --faces N [--max-error D]',
   summary: 'collapse edges by quadric error down to N triangles (or until the error passes D)',
-  run(args) {
+  async run(args) {
     const { input, output, options } = parseDecimateArguments(args);
-    const { mesh } = loadMesh(input);
+    const { mesh } = await loadMesh(input);
     const reason = decimateLoadedMesh(mesh, options);
     if (reason !== null) {
       console.error(`halfedge-lab: ${reason}`);
       return 2;
     }
-    saveMesh(mesh, output);
+    await saveMesh(mesh, output);
     return 0;
   },
 };

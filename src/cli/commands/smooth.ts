@@ -67,15 +67,15 @@ export function smoothLoadedMesh(mesh: HalfedgeMesh, options: SmoothingOptions):
 export const smoothCommand: Command = {
   usage: 'smooth IN OUT [--method laplacian|cotan|taubin] [--iterations N] [--lambda X] [--mu X] [--boundary fixed|smooth]',
   summary: 'move each vertex towards its neighbours (default Taubin λ|μ, which keeps the volume)',
-  run(args) {
+  async run(args) {
     const { input, output, options } = parseSmoothArguments(args);
-    const { mesh } = loadMesh(input);
+    const { mesh } = await loadMesh(input);
     const reason = smoothLoadedMesh(mesh, options);
     if (reason !== null) {
       console.error(`halfedge-lab: ${reason}`);
       return 2;
     }
-    saveMesh(mesh, output);
+    await saveMesh(mesh, output);
     return 0;
   },
 };

@@ -36,15 +36,15 @@ export function subdivideLoadedMesh(mesh: HalfedgeMesh, scheme: SubdivisionSchem
 export const subdivideCommand: Command = {
   usage: 'subdivide SCHEME IN OUT [--levels N]',
   summary: `refine by Loop, Catmull-Clark, Butterfly or √3 (SCHEME: ${subdivisionSchemes.join(', ')})`,
-  run(args) {
+  async run(args) {
     const { scheme, input, output, levels } = parseSubdivideArguments(args);
-    const { mesh } = loadMesh(input);
+    const { mesh } = await loadMesh(input);
     const reason = subdivideLoadedMesh(mesh, scheme, levels);
     if (reason !== null) {
       console.error(`halfedge-lab: ${reason}`);
       return 2;
     }
-    saveMesh(mesh, output);
+    await saveMesh(mesh, output);
     return 0;
   },
 };

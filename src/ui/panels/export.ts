@@ -18,6 +18,7 @@ const meshFormats: Array<{ format: string; label: string; extension: string }> =
   { format: 'ply-binary', label: 'PLY (binary)', extension: 'ply' },
   { format: 'off', label: 'OFF', extension: 'off' },
   { format: 'obj', label: 'OBJ', extension: 'obj' },
+  { format: 'glb', label: 'glTF (.glb)', extension: 'glb' },
 ];
 
 export function renderExport(container: HTMLElement, actions: ExportActions): void {

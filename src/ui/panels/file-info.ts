@@ -22,7 +22,7 @@ export function renderFileInfo(
     'p',
     {},
     el('strong', {}, file.name),
-    ` — ${file.format.toUpperCase()} ${file.encoding.replaceAll('_', ' ')}, ${file.counts.vertices} vertices and ${file.counts.faces} faces in the file`,
+    ` — ${formatName(file)}, ${file.counts.vertices} vertices and ${file.counts.faces} faces in the file`,
   );
   const list = (title: string, lines: string[]) =>
     lines.length ? el('details', {}, el('summary', {}, `${title} (${lines.length})`), el('ul', {}, ...lines.map((line) => el('li', {}, line)))) : null;
@@ -68,4 +68,10 @@ export function incidentTarget(incident: { vertices?: number[]; faces?: number[]
   if (incident.faces?.length) return { kind: 'face', id: incident.faces.at(-1)! };
   if (incident.halfedges?.length) return { kind: 'halfedge', id: incident.halfedges[0] };
   return null;
+}
+
+/** `PLY binary little endian`, `OFF ascii`, `glTF binary (.glb)`. */
+function formatName({ format, encoding }: { format: string; encoding: string }): string {
+  if (format === 'gltf') return encoding === 'ascii' ? 'glTF (JSON)' : 'glTF binary (.glb)';
+  return `${format.toUpperCase()} ${encoding.replaceAll('_', ' ')}`;
 }

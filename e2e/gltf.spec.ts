@@ -1,0 +1,59 @@
+import { readFileSync } from 'node:fs';
+import { Document, NodeIO } from '@gltf-transform/core';
+import { expect, type Page, test } from '@playwright/test';
+import { readMeshAsync } from '../src/core/io/index.js';
+import { buildMesh } from '../src/index.js';
+import { addCube, addSphere, glbOf } from '../tests/io/gltf-fixtures.js';
+import { appErrors, openApp } from './helpers.js';
+
+const stats = (page: Page) => page.evaluate(() => window.halfedgeLab.state().stats!);
+
+function scene(): Document {
+  const document = new Document();
+  addCube(document, 'Box');
+  addSphere(document, 'Globe', 16, 8).setTranslation([3, 0, 0]);
+  return document;
+}
+
+test.describe('glTF in the app', () => {
+  test('opens a .glb welded to its surface, a .gltf with its .bin, refuses one without, and exports .glb', async ({ page }, testInfo) => {
+    await openApp(page, 'cube.off');
+    await page.locator('#file-input').setInputFiles({ name: 'scene.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(await glbOf(scene())) });
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('scene.glb');
+    // the cube's 24 and the sphere's 153 file vertices weld into 8 + 114, closed
+    expect(await stats(page)).toMatchObject({ vertices: 122, faces: 236, boundaryLoops: 0 });
+    await page.getByRole('tab', { name: 'File' }).click();
+    await page.locator('#file-info summary', { hasText: 'Notes' }).click();
+    await expect(page.locator('#file-info')).toContainText('welded 177 glTF vertices into 122');
+    await expect(page.locator('#file-info')).toContainText('Globe: 114 vertices, 224 triangles');
+    await page.screenshot({ path: testInfo.outputPath('gltf-file-tab.png') });
+
+    // a .gltf and its .bin, picked together
+    const { json, resources } = await new NodeIO().writeJSON(scene(), { basename: 'scene' });
+    const gltf = { name: 'scene.gltf', mimeType: 'model/gltf+json', buffer: Buffer.from(JSON.stringify(json)) };
+    await page.locator('#file-input').setInputFiles([gltf, { name: 'scene.bin', mimeType: 'application/octet-stream', buffer: Buffer.from(resources['scene.bin']!) }]);
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('scene.gltf');
+    expect((await stats(page)).vertices).toBe(122);
+    // without it: the buffer is named, and the mesh on screen stays
+    await page.locator('#file-input').setInputFiles(gltf);
+    await expect(page.locator('#error-message')).toContainText("buffer 0 is the file 'scene.bin', which was not given");
+    expect((await stats(page)).vertices).toBe(122);
+    await page.getByRole('button', { name: 'Dismiss the error' }).click();
+
+    // a meshopt-compressed file: its decoder loads in the worker when needed
+    await page.locator('#file-input').setInputFiles({ name: 'packed.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(await glbOf(scene(), 'meshopt')) });
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('packed.glb');
+    expect(await stats(page)).toMatchObject({ vertices: 122, faces: 236 });
+
+    // out as .glb, and back: the same counts
+    await expect(page.locator('#file-info')).toContainText('packed.glb — glTF binary (.glb), 175 vertices and 236 faces in the file');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    const downloading = page.waitForEvent('download');
+    await page.getByRole('button', { name: 'Export the mesh as glTF (.glb)' }).click();
+    const download = await downloading;
+    expect(download.suggestedFilename()).toBe('packed-edited.glb');
+    const { mesh } = buildMesh((await readMeshAsync(readFileSync((await download.path())!))).soup);
+    expect([mesh.nVertices, mesh.nEdges, mesh.nFaces]).toEqual([122, 3 * 236 / 2, 236]);
+    expect(appErrors(page)).toEqual([]);
+  });
+});
