@@ -19,6 +19,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import type { SoupAttribute } from '../soup.js';
 import { GLB_MAGIC } from './detect.js';
 import type { MeshFile } from './mesh-file.js';
+import { decodeText } from './text.js';
 import { weldPositions } from './weld.js';
 
 export interface GltfReadOptions {
@@ -75,7 +76,7 @@ async function glbJson(io: WebIO, bytes: Uint8Array): Promise<JSONDocument> {
   if (length > bytes.length) throw new ParseError(FORMAT, { byteOffset: 8 }, `the header says the file has ${length} bytes; it has ${bytes.length} (cut short?)`);
   const jsonLength = view.getUint32(12, true);
   if (20 + jsonLength > length) throw new ParseError(FORMAT, { byteOffset: 12 }, `the JSON chunk claims ${jsonLength} bytes; the file has ${length - 20} after the header`);
-  const text = new TextDecoder().decode(bytes.subarray(20, 20 + jsonLength));
+  const text = decodeText(bytes.subarray(20, 20 + jsonLength));
   let json: unknown;
   try {
     json = JSON.parse(text);
@@ -93,7 +94,7 @@ async function glbJson(io: WebIO, bytes: Uint8Array): Promise<JSONDocument> {
 function gltfJson(bytes: Uint8Array, files: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): JSONDocument {
   let json: JSONDocument['json'];
   try {
-    json = JSON.parse(new TextDecoder().decode(bytes)) as JSONDocument['json'];
+    json = JSON.parse(decodeText(bytes)) as JSONDocument['json'];
   } catch (error) {
     throw jsonError(error, 0);
   }

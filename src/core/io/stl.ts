@@ -25,6 +25,7 @@ import { BinaryReader, viewOf } from './binary.js';
 import { GrowableArray } from './growable.js';
 import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { TextScanner, decodeText } from './text.js';
+import { weldPositions } from './weld.js';
 
 const HEADER_BYTES = 80;
 const TRIANGLE_BYTES = 50;
@@ -53,7 +54,11 @@ export function readStl(bytes: Uint8Array, progress: Progress): MeshFile {
   const triangles = ascii ? readAscii(bytes, comments, progress) : readBinary(bytes, comments, notes);
   const { corners, faceStarts, normals } = triangles;
   const cornerCount = corners.length / 3;
-  const { positions, indices } = weldCorners(corners);
+  // STL repeats each position at every corner: welded, the triangles share their vertices
+  const weld = weldPositions(corners);
+  const indices = weld.remap;
+  // the values are float32 in the file, and kept so (the finite check names the type they are stored in)
+  const positions = Float32Array.from(weld.positions);
   const vertexCount = positions.length / 3;
   const welded = `${plural(cornerCount, 'STL corner')} into ${plural(vertexCount, 'vertex', 'vertices')}`;
   notes.push(`welded ${welded} (${cornerCount - vertexCount} merged)`);
@@ -174,55 +179,3 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
   return { corners: corners.finish(), faceStarts: faceStarts.finish(), normals: normals.finish() };
 }
 
-/**
- * Merges corners at exactly the same position into one vertex, keeping first-seen order: an open
- * addressing hash table keyed by the three coordinates' bits (-0 counted as 0), so the work is
- * linear and no position is turned into a string.
- */
-function weldCorners(corners: Float32Array<ArrayBuffer>): {
-  positions: Float32Array<ArrayBuffer>;
-  indices: Uint32Array<ArrayBuffer>;
-} {
-  const cornerCount = corners.length / 3;
-  for (let i = 0; i < corners.length; i++) if (corners[i] === 0) corners[i] = 0;
-  const bits = new Uint32Array(corners.buffer, corners.byteOffset, corners.length);
-  let size = 2;
-  while (size < 2 * cornerCount) size *= 2;
-  const mask = size - 1;
-  const table = new Int32Array(size).fill(-1);
-  const positions = new Float32Array(corners.length);
-  const positionBits = new Uint32Array(positions.buffer);
-  const indices = new Uint32Array(cornerCount);
-  let vertexCount = 0;
-  for (let c = 0; c < cornerCount; c++) {
-    const x = bits[3 * c];
-    const y = bits[3 * c + 1];
-    const z = bits[3 * c + 2];
-    let slot = hashBits(x, y, z) & mask;
-    // ends within `size` probes: the table is at most half full, so an empty slot is always ahead
-    for (;;) {
-      const v = table[slot];
-      if (v === -1) {
-        table[slot] = vertexCount;
-        positionBits[3 * vertexCount] = x;
-        positionBits[3 * vertexCount + 1] = y;
-        positionBits[3 * vertexCount + 2] = z;
-        indices[c] = vertexCount++;
-        break;
-      }
-      if (positionBits[3 * v] === x && positionBits[3 * v + 1] === y && positionBits[3 * v + 2] === z) {
-        indices[c] = v;
-        break;
-      }
-      slot = (slot + 1) & mask;
-    }
-  }
-  return { positions: positions.slice(0, 3 * vertexCount), indices };
-}
-
-function hashBits(x: number, y: number, z: number): number {
-  let h = Math.imul(x, 0x9e3779b1) ^ Math.imul(y, 0x85ebca77) ^ Math.imul(z, 0xc2b2ae3d);
-  h ^= h >>> 15;
-  h = Math.imul(h, 0x2c1b3c6d);
-  return h ^ (h >>> 12);
-}

@@ -299,7 +299,7 @@ function excerpt(bytes: Uint8Array, start: number, end: number): string {
 
 /**
  * Decodes UTF-8 bytes (ASCII being the common case) into a string; a malformed sequence becomes
- * U+FFFD. Used for names, comments and error excerpts, never for the bulk of the data.
+ * U+FFFD. Used for names, comments and error excerpts, and for glTF's JSON (ASCII runs go whole).
  */
 export function decodeText(bytes: Uint8Array, start = 0, end = bytes.length): string {
   end = Math.min(end, bytes.length);
@@ -308,8 +308,11 @@ export function decodeText(bytes: Uint8Array, start = 0, end = bytes.length): st
   while (i < end) {
     const c = bytes[i];
     if (c < 0x80) {
-      text += String.fromCharCode(c);
-      i++;
+      // a run of ASCII at once (most of any text), in pieces that fit an argument list
+      let j = i + 1;
+      while (j < end && j - i < 8192 && bytes[j] < 0x80) j++;
+      text += String.fromCharCode.apply(null, bytes.subarray(i, j) as unknown as number[]);
+      i = j;
       continue;
     }
     const length = c >= 0xf0 ? 4 : c >= 0xe0 ? 3 : c >= 0xc0 ? 2 : 0;
