@@ -60,7 +60,13 @@ function gltfResources(path: string, bytes: Uint8Array): Map<string, Uint8Array<
   for (const uri of uris) {
     // only files beside the .gltf or below it: a buffer cannot name /etc/passwd or ../../secret
     if (typeof uri !== 'string' || uri.startsWith('data:') || uri.includes('..') || uri.startsWith('/') || uri.includes(':')) continue;
-    resources.set(uri, readBytes(join(dirname(path), decodeURIComponent(uri))));
+    let name: string;
+    try {
+      name = decodeURIComponent(uri);
+    } catch {
+      continue; // not a file name: the reader says the buffer was not given
+    }
+    resources.set(uri, readBytes(join(dirname(path), name)));
   }
   return resources;
 }

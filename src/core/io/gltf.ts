@@ -204,7 +204,7 @@ function checkData({ json, resources }: JSONDocument): void {
 function dataUriLength(uri: string): number {
   const comma = uri.indexOf(',');
   const data = uri.slice(comma + 1);
-  if (!uri.slice(0, comma).endsWith(';base64')) return decodeURIComponent(data).length;
+  if (!uri.slice(0, comma).endsWith(';base64')) return safeDecode(data).length;
   const padding = data.endsWith('==') ? 2 : data.endsWith('=') ? 1 : 0;
   return Math.floor((data.length * 3) / 4) - padding;
 }
@@ -244,20 +244,13 @@ function noteLogger(notes: string[]): Logger {
 
 const MODE_NAMES = ['points', 'lines', 'line loops', 'line strips'];
 
-interface Gathered {
-  positions: number[];
-  corners: number[];
-  texcoords: number[];
-  normals: number[];
-  hasTexcoords: boolean;
-  hasNormals: boolean;
-}
 
 function gatherMeshes(gltf: Document, binary: boolean, notes: string[], tolerance: number): MeshFile {
   const root = gltf.getRoot();
   const scene = root.getDefaultScene() ?? root.listScenes()[0];
   if (!scene) throw new ParseError(FORMAT, {}, 'the file has no scene, so no mesh is placed');
-  const out: Gathered = { positions: [], corners: [], texcoords: [], normals: [], hasTexcoords: false, hasNormals: false };
+  // every node's welded vertices, and per corner: its vertex, texture coordinate and normal
+  const out = { positions: [] as number[], corners: [] as number[], texcoords: [] as number[], normals: [] as number[], hasTexcoords: false, hasNormals: false };
   let fileVertices = 0;
   let welded = 0;
   let skipped = 0;
@@ -270,7 +263,7 @@ function gatherMeshes(gltf: Document, binary: boolean, notes: string[], toleranc
     const normalMatrix = cofactor3(matrix);
     const mirrored = determinant3(matrix) < 0;
     // this node's vertices, then its triangles as indices into them
-    const local: Gathered = { positions: [], corners: [], texcoords: [], normals: [], hasTexcoords: false, hasNormals: false };
+    const local = { positions: [] as number[], corners: [] as number[] };
     const localTexcoord: (number[] | null)[] = [];
     const localNormal: (number[] | null)[] = [];
     for (const primitive of mesh.listPrimitives()) {
@@ -299,8 +292,8 @@ function gatherMeshes(gltf: Document, binary: boolean, notes: string[], toleranc
         localTexcoord.push(texcoord ? texcoord.getElement(i, [0, 0]) : null);
         localNormal.push(normal ? transformNormal(normalMatrix, normal.getElement(i, [0, 0, 0])) : null);
       }
-      local.hasTexcoords ||= texcoord !== null;
-      local.hasNormals ||= normal !== null;
+      out.hasTexcoords ||= texcoord !== null;
+      out.hasNormals ||= normal !== null;
       const indices = primitive.getIndices();
       const indexCount = indices ? indices.getCount() : count;
       const index = (k: number) => {
@@ -333,8 +326,6 @@ function gatherMeshes(gltf: Document, binary: boolean, notes: string[], toleranc
       out.normals.push(...(localNormal[vertex] ?? [0, 0, 0]));
       if (k % 3 === 2) faceStarts.push(out.corners.length);
     }
-    out.hasTexcoords ||= local.hasTexcoords;
-    out.hasNormals ||= local.hasNormals;
     notes.push(`${name}: ${weld.positions.length / 3} vertices, ${faceStarts.length - 1 - firstFace} triangles (faces ${firstFace}…${faceStarts.length - 2})`);
   });
   if (faceStarts.length === 1) throw new ParseError(FORMAT, {}, 'the default scene has no triangles');
