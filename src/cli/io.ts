@@ -59,13 +59,14 @@ function gltfResources(path: string, bytes: Uint8Array): Map<string, Uint8Array<
   const resources = new Map<string, Uint8Array<ArrayBuffer>>();
   for (const uri of uris) {
     // only files beside the .gltf or below it: a buffer cannot name /etc/passwd or ../../secret
-    if (typeof uri !== 'string' || uri.startsWith('data:') || uri.includes('..') || uri.startsWith('/') || uri.includes(':')) continue;
+    if (typeof uri !== 'string' || uri.startsWith('data:')) continue;
     let name: string;
     try {
       name = decodeURIComponent(uri);
     } catch {
       continue; // not a file name: the reader says the buffer was not given
     }
+    if (name.includes('..') || name.startsWith('/') || name.includes(':') || name.includes('\\')) continue;
     resources.set(uri, readBytes(join(dirname(path), name)));
   }
   return resources;

@@ -1,8 +1,13 @@
 // glTF in and out: exporter-made files (seams split, several nodes, strips, points, quantized,
 // Draco, meshopt) welded to the real surface with exact counts; round trips .glb → mesh → .glb;
 // broken files refused with the accessor or buffer named.
+import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { Document, NodeIO, Primitive } from '@gltf-transform/core';
-import { describe, expect, it } from 'vitest';
+import { afterAll, describe, expect, it } from 'vitest';
+import { convert } from '../../src/cli/commands/convert.js';
+import { loadMesh } from '../../src/cli/io.js';
 import { buildMesh, type HalfedgeMesh, meshStats, ParseError, validate } from '../../src/index.js';
 import { readMeshAsync, writeMeshAsync } from '../../src/core/io/index.js';
 import { weldPositions } from '../../src/core/io/weld.js';
@@ -210,6 +215,29 @@ describe('writing glTF', () => {
     const { mesh } = buildMesh({ positions: Float64Array.of(0, 0, 0, 2, 0, 0, 2, 2, 0, 1, 1, 0, 0, 2, 0), faceStarts: Uint32Array.of(0, 5), faceIndices: Uint32Array.of(0, 1, 2, 3, 4) });
     const { mesh: back } = await open(await writeMeshAsync(mesh, 'glb'));
     expect(counts(back)).toEqual({ V: 5, E: 7, F: 3, boundaryLoops: 1 });
+  });
+});
+
+describe('the command line', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'halfedge-lab-gltf-'));
+  afterAll(() => rmSync(dir, { recursive: true, force: true }));
+
+  it('converts a .gltf, its buffer read from beside it, to .glb and back to the same counts', async () => {
+    const { json, resources } = await new NodeIO().writeJSON(sphereDocument(), { basename: 'globe' });
+    writeFileSync(join(dir, 'globe.gltf'), JSON.stringify(json));
+    writeFileSync(join(dir, 'globe.bin'), resources['globe.bin']!);
+    expect(await convert.run([join(dir, 'globe.gltf'), join(dir, 'globe.glb')])).toBe(0);
+    expect(counts((await loadMesh(join(dir, 'globe.glb'))).mesh)).toEqual(sphereCounts);
+  });
+
+  it('reads no buffer from outside the folder of the .gltf, and says which buffer is missing', async () => {
+    mkdirSync(join(dir, 'inner'));
+    writeFileSync(join(dir, 'secret.bin'), new Uint8Array(16));
+    writeFileSync(join(dir, 'inner', 'evil.gltf'), JSON.stringify({ asset: { version: '2.0' }, buffers: [{ uri: '%2e%2e/secret.bin', byteLength: 16 }] }));
+    // a UsageError: the command line prints it on one line and exits with status 2
+    await expect(convert.run([join(dir, 'inner', 'evil.gltf'), join(dir, 'out.glb')])).rejects.toThrow(
+      /evil\.gltf: glTF: buffer 0 is the file '%2e%2e\/secret\.bin', which was not given/,
+    );
   });
 });
 
