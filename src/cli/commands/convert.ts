@@ -2,7 +2,7 @@ import { loadMesh, parseOptions, saveMesh } from '../io.js';
 import type { Command } from './index.js';
 
 export const convert: Command = {
-  usage: 'convert IN OUT [--format ply|ply-binary|off|obj|json]',
+  usage: 'convert IN OUT [--format ply|ply-binary|off|obj|glb|json]',
   summary: 'read, build (with repairs) and write; the format follows OUT',
   async run(args) {
     const { values, positionals } = parseOptions(args, { format: { type: 'string' } }, 2);

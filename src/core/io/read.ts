@@ -20,8 +20,9 @@ const readers: Record<Exclude<MeshFormat, 'gltf'>, (bytes: Uint8Array, progress:
 };
 
 /**
- * Reads a PLY, OFF, OBJ or STL file (glTF, whose decoders load on demand, is `readMeshAsync`'s). The format comes from the content (the file name is asked
- * only when the content does not say); faces stay polygons, attributes come along.
+ * Reads a PLY, OFF, OBJ or STL file (glTF, whose decoders load on demand, is `readMeshAsync`'s).
+ * The format comes from the content (the file name is asked only when the content does not say);
+ * faces stay polygons, attributes come along.
  * @example
  *   const file = readMesh(bytes, { fileName: 'bunny.ply' });
  *   const { mesh, report } = buildMesh(file.soup);
@@ -33,9 +34,7 @@ export function readMesh(data: ArrayBuffer | Uint8Array, options: ReadOptions = 
   const progress = options.onProgress ?? (() => {});
   const format = detectFormat(bytes, options.fileName);
   if (format === 'gltf') throw new ParseError('glTF', {}, 'a glTF file is read with `await readMeshAsync(bytes)`');
-  progress(0);
-  const file = readers[format](bytes, progress);
-  return checkedFile(file, progress);
+  return readAs(format, bytes, progress);
 }
 
 /**
@@ -47,12 +46,18 @@ export function readMesh(data: ArrayBuffer | Uint8Array, options: ReadOptions = 
  */
 export async function readMeshAsync(data: ArrayBuffer | Uint8Array, options: ReadOptions & GltfReadOptions = {}): Promise<MeshFile> {
   const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
-  if (detectFormat(bytes, options.fileName) !== 'gltf') return readMesh(bytes, options);
   const progress = options.onProgress ?? (() => {});
+  const format = detectFormat(bytes, options.fileName);
+  if (format !== 'gltf') return readAs(format, bytes, progress);
   progress(0);
   // glTF-Transform and the decoders load only when a glTF file comes
   const { readGltf } = await import('./gltf.js');
   return checkedFile(await readGltf(bytes, options), progress);
+}
+
+function readAs(format: Exclude<MeshFormat, 'gltf'>, bytes: Uint8Array, progress: Progress): MeshFile {
+  progress(0);
+  return checkedFile(readers[format](bytes, progress), progress);
 }
 
 function checkedFile(file: MeshFile, progress: Progress): MeshFile {

@@ -166,8 +166,12 @@ export class PracticePanel {
   private async showFirstFixture(): Promise<void> {
     const fixture = this.exercise.fixtures[0];
     this.framed = this.exercise;
-    const input = fixture.input === undefined ? '' : `, input ${fixture.input}`;
-    await this.actions.showState(serializeMesh(fixtureMesh(fixture, fixtureFiles)), `practice: ${this.exercise.title}, ${fixture.name}${input}`, null, true, null);
+    await this.actions.showState(serializeMesh(fixtureMesh(fixture, fixtureFiles)), this.fixtureLabel(fixture.name, fixture.input), null, true, null);
+  }
+
+  /** `practice: Flip an edge, an edge inside a disk, input 10`: the history entry and the status line. */
+  private fixtureLabel(name: string, input: number | undefined): string {
+    return `practice: ${this.exercise.title}, ${name}${input === undefined ? '' : `, input ${input}`}`;
   }
 
   setCode(text: string): void {
@@ -261,8 +265,7 @@ export class PracticePanel {
     this.read = { fixture, step: at };
     // a step on the fixture in the view only changes the marks; another fixture is shown first
     if (!sameFixture || !this.actions.mark(marks)) {
-      const input = result.input === undefined ? '' : `, input ${result.input}`;
-      await this.actions.showState(serializeMesh(result.before), `practice: ${this.exercise.title}, ${result.fixture}${input}`, null, this.framed !== result, marks);
+      await this.actions.showState(serializeMesh(result.before), this.fixtureLabel(result.fixture, result.input), null, this.framed !== result, marks);
       this.framed = result;
     }
     this.drawReads(fixture);
