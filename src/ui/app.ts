@@ -199,6 +199,7 @@ export class App {
         }
       },
       select: (selection: Selection | null) => this.select(selection),
+      frame: (selection: Selection) => this.frameAround(selection),
       mark: (marks: HighlightSpec | null) => {
         // only on the state the panel showed: after an undo or an opened file the ids mean other elements
         const history = this.snapshot?.history;
@@ -429,9 +430,13 @@ export class App {
    * seen from the side its faces face.
    */
   frameSelection(): void {
+    if (this.selection) this.frameAround(this.selection);
+  }
+
+  /** Brings an element and the faces around it to fill most of the view, seen from their front. */
+  private frameAround(s: Selection): void {
     const mesh = this.mesh;
-    const s = this.selection;
-    if (!mesh || !s) return;
+    if (!mesh || !exists(mesh, s)) return;
     const points = neighbourhoodPoints(mesh, s);
     const spec = selectionHighlight(mesh, s, this.convention);
     for (const { id } of spec.vertices) points.push(new Vector3(...mesh.position(id)));

@@ -29,6 +29,8 @@ export interface PracticeActions {
   showState(mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean, marks: HighlightSpec | null): Promise<void>;
   /** Changes the marks on the state shown; false when the view has moved on to another mesh. */
   mark(marks: HighlightSpec | null): boolean;
+  /** Points the camera at an element and the faces around it, from their front. */
+  frame(selection: { kind: 'vertex'; id: number }): void;
   /** Selects an element in the view (a culprit of the first broken invariant), or nothing. */
   select(selection: { kind: 'halfedge' | 'vertex' | 'face'; id: number } | null): void;
   say(message: string, role?: 'status' | 'alert'): void;
@@ -265,7 +267,10 @@ export class PracticePanel {
     this.read = { fixture, step: at };
     // a step on the fixture in the view only changes the marks; another fixture is shown first
     if (!sameFixture || !this.actions.mark(marks)) {
-      await this.actions.showState(serializeMesh(result.before), this.fixtureLabel(result.fixture, result.input), null, this.framed !== result, marks);
+      const frame = this.framed !== result;
+      await this.actions.showState(serializeMesh(result.before), this.fixtureLabel(result.fixture, result.input), null, frame, marks);
+      // where the code read: on a closed mesh the whole view may show the other side
+      if (frame && result.visits.length > 0) this.actions.frame({ kind: 'vertex', id: result.before.heVertex[result.visits[0]] });
       this.framed = result;
     }
     this.drawReads(fixture);
