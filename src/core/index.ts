@@ -18,6 +18,7 @@ export * from './report.js';
 export * from './serialize.js';
 export * from './shapes.js';
 export * from './soup.js';
+export * from './seams.js';
 export * from './stats.js';
 export * from './triangles.js';
 export * from './validate.js';
