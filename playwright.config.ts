@@ -45,9 +45,10 @@ export default defineConfig({
       },
     },
   ],
-  // the production build, served as a static host would (strict Content-Security-Policy included)
+  // the production build, served as a static host would (strict Content-Security-Policy included);
+  // the <halfedge-view> element's own bundle too, which e2e/embed.spec.ts serves to a page of its own
   webServer: {
-    command: `npx vite build --logLevel warn && npx vite preview --port ${port} --strictPort`,
+    command: `npx vite build --logLevel warn && npm run build:element && npx vite preview --port ${port} --strictPort`,
     url: `http://localhost:${port}`,
     reuseExistingServer: !process.env.CI,
     timeout: 120_000,

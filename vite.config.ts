@@ -1,6 +1,14 @@
-import { readdirSync, writeFileSync } from 'node:fs';
+import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, relative } from 'node:path';
 import { defineConfig, type Plugin } from 'vite';
+
+/** The page's markup is src/ui/layout.html, which the <halfedge-view> element builds from too. */
+function appLayout(): Plugin {
+  return {
+    name: 'app-layout',
+    transformIndexHtml: (html) => html.replace('<!-- app layout: src/ui/layout.html -->', readFileSync(new URL('src/ui/layout.html', import.meta.url), 'utf8')),
+  };
+}
 
 /** Lists every file of the built site in offline.json, for the service worker to keep (public/sw.js). */
 function offlineList(): Plugin {
@@ -25,7 +33,7 @@ export default defineConfig({
   // the app builds to site/ (a static site); dist/ is the library's (tsc)
   build: { target: 'es2022', outDir: 'site', chunkSizeWarningLimit: 1200 },
   worker: { format: 'es' },
-  plugins: [offlineList()],
+  plugins: [appLayout(), offlineList()],
   // known up front, so the dev server never reloads the page to add a dependency it just found
   optimizeDeps: {
     include: [

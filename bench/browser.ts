@@ -6,6 +6,7 @@
  *   - one Loop step on 250k triangles: from the click to the first frame that shows the result;
  *   - for both, the longest main-thread task while the worker works, and overall;
  *   - the size of the app's JavaScript, gzipped: what the first load needs, and the Practice tab's, loaded when it opens;
+ *   - the same for a page with one <halfedge-view> element (its own bundle, dist/element);
  *   - on the 1.31M-triangle icosphere: opening it, then flip, split, collapse, undo, redo and one
  *     smoothing step, each from the call to the drawn result and as a share of the open.
  *
@@ -31,6 +32,7 @@ const report = (result: Record<string, unknown>) => {
 };
 
 execFileSync(join(root, 'node_modules/.bin/vite'), ['build', '--logLevel', 'error'], { cwd: root, stdio: 'inherit' });
+execFileSync(join(root, 'node_modules/.bin/vite'), ['build', '-c', 'vite.element.config.ts', '--logLevel', 'error'], { cwd: root, stdio: 'inherit' });
 const server = spawn(join(root, 'node_modules/.bin/vite'), ['preview', '--port', String(port), '--strictPort'], { cwd: root, stdio: 'ignore' });
 const folder = mkdtempSync(join(tmpdir(), 'halfedge-bench-'));
 const executablePath = ['/usr/bin/chromium', '/usr/bin/chromium-browser'].find((p) => existsSync(p));
@@ -65,6 +67,7 @@ try {
   report({ case: 'practice-js-gzip', size: practice.length, ms: null, kB: gzipped(practice) });
   report({ case: 'gltf-js-gzip', size: gltf.length, ms: null, kB: gzipped(gltf) });
   report({ case: 'first-load-to-sample-drawn', size: 0, ms: Math.round(firstLoad), limitMs: 1500 });
+  await measureElement();
 
   await page.evaluate(() => {
     const w = window as unknown as { longTasks: Array<{ start: number; duration: number }> };
@@ -160,6 +163,33 @@ async function measure(page: import('@playwright/test').Page, name: string, size
   };
   report(result);
   return result;
+}
+
+/** A page of its own with one <halfedge-view>: the scripts it fetches until its mesh is drawn, gzipped, and the time. */
+async function measureElement(): Promise<void> {
+  const elementDir = join(root, 'dist/element');
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  const fetched: string[] = [];
+  await page.route('**/course/**', (route) => {
+    const path = new URL(route.request().url()).pathname.replace(/^\/course\//, '');
+    if (path === 'index.html') {
+      const body = '<!doctype html><script type="module" src="/course/element.js"></script><halfedge-view src="/models/torus.off"></halfedge-view>';
+      return route.fulfill({ body, contentType: 'text/html' });
+    }
+    fetched.push(path);
+    return route.fulfill({ body: readFileSync(join(elementDir, path)), contentType: 'text/javascript' });
+  });
+  await page.goto(`http://localhost:${port}/course/index.html`);
+  await page.waitForFunction(() => customElements.get('halfedge-view') !== undefined);
+  const drawnAt = await page.evaluate(async () => {
+    const lab = document.querySelector('halfedge-view')!.lab;
+    await lab.ready;
+    return lab.state().drawnAt;
+  });
+  const kB = Math.round(fetched.reduce((sum, path) => sum + gzipSync(readFileSync(join(elementDir, path)), { level: 9 }).length, 0) / 1024);
+  report({ case: 'element-js-gzip', size: fetched.length, ms: null, kB });
+  report({ case: 'element-first-load-to-drawn', size: 0, ms: Math.round(drawnAt) });
+  await page.close();
 }
 
 async function waitForServer(url: string): Promise<void> {

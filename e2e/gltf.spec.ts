@@ -26,7 +26,22 @@ test.describe('glTF in the app', () => {
     await page.locator('#file-info summary', { hasText: 'Notes' }).click();
     await expect(page.locator('#file-info')).toContainText('welded 177 glTF vertices into 122');
     await expect(page.locator('#file-info')).toContainText('Globe: 114 vertices, 224 triangles');
+    // the seams the file had cut open: the cube's 12 edges, the sphere's meridian (6) and pole edges (2 × 16)
+    await expect(page.locator('#file-info')).toContainText('50 seam edges: where the file split its vertices');
+    await page.getByRole('button', { name: 'Show the seams' }).click();
+    await expect(page.getByRole('button', { name: 'Hide the seams' })).toHaveAttribute('aria-pressed', 'true');
+    expect(await page.evaluate(() => window.halfedgeLab.state().seamsShown)).toBe(true);
+    await expect(page.locator('#status')).toContainText('50 seam edges marked');
     await page.screenshot({ path: testInfo.outputPath('gltf-file-tab.png') });
+    await page.getByRole('button', { name: 'Hide the seams' }).click();
+    expect(await page.evaluate(() => window.halfedgeLab.state().seamsShown)).toBe(false);
+    // an edit renumbers edges: the marks go, and asked again they are the edited mesh's (a cube
+    // edge split in two is two seam edges; the new edges across its faces are none)
+    expect(await page.evaluate(() => window.halfedgeLab.showSeams(true))).toBe(50);
+    await page.evaluate(() => window.halfedgeLab.edit({ kind: 'split-edge', edge: 0 }));
+    expect(await page.evaluate(() => window.halfedgeLab.state().seamsShown)).toBe(false);
+    expect(await page.evaluate(() => window.halfedgeLab.showSeams(true))).toBe(51);
+    await page.evaluate(() => window.halfedgeLab.undo());
 
     // a .gltf and its .bin, picked together
     const { json, resources } = await new NodeIO().writeJSON(scene(), { basename: 'scene' });

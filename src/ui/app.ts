@@ -47,6 +47,7 @@ import { handleKey } from './keys.js';
 import { elementName, exists, isMove, type Move, type Selection, walk, type WalkStep } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, type ReplayStep, type ViewState } from './share.js';
+import type { PanelName } from './embed.js';
 
 export interface SampleModel {
   file: string;
@@ -65,6 +66,23 @@ const DETAILS_AFTER_MS = 400;
 
 const tabs = ['inspect', 'operate', 'quiz', 'practice', 'file'] as const;
 export type Tab = (typeof tabs)[number];
+
+/** Where an app lives: the whole page, or the shadow root of a `<halfedge-view>` element. */
+export interface AppHost {
+  /** Holds the markup of layout.html, in which ids are looked up. */
+  root: Document | ShadowRoot;
+  /** Carries the state classes (presentation, stepping…) and goes full screen in presentation mode. */
+  frame: HTMLElement;
+  /** Hears the keys and the dropped files: the window for the page, the element for an embed. */
+  input: Window | HTMLElement;
+  /** The panels an embed shows, without the toolbar or the tabs (see embed.ts); null for the whole app. */
+  panels: readonly PanelName[] | null;
+}
+
+/** The whole page as the app's host. */
+export function pageHost(panels: readonly PanelName[] | null = null): AppHost {
+  return { root: document, frame: document.documentElement, input: window, panels };
+}
 
 export class App {
   readonly client: SessionClient;
@@ -113,12 +131,23 @@ export class App {
   private quizSpec: HighlightSpec | null = null;
   /** A repair from the build report being shown (cleared by the next selection). */
   private problemSpec: HighlightSpec | null = null;
+  /** The seams of a file with per-corner values, while the File tab shows them (see `toggleSeams`). */
+  private seamSpec: HighlightSpec | null = null;
+  get seamsShown(): boolean {
+    return this.seamSpec !== null;
+  }
   /** What the Practice tab marks on the state of a run it shows (the last writes, or the reads so far). */
   private practiceSpec: HighlightSpec | null = null;
   private traversalSpec: HighlightSpec | null = null;
   private markReady!: () => void;
+  private readonly root: Document | ShadowRoot;
+  private readonly frame: HTMLElement;
+  private readonly input: Window | HTMLElement;
+  /** The panels shown, in embed mode; null for the whole app, with its toolbar and tabs. */
+  readonly panels: readonly PanelName[] | null;
 
-  constructor() {
+  constructor(host: AppHost = pageHost()) {
+    ({ root: this.root, frame: this.frame, input: this.input, panels: this.panels } = host);
     this.ready = new Promise((resolve) => (this.markReady = resolve));
     this.client = new SessionClient({
       createSessionWorker: () => new Worker(new URL('../workers/session.worker.ts', import.meta.url), { type: 'module' }),
@@ -130,7 +159,7 @@ export class App {
       if (snapshot) this.show(snapshot, false);
     };
 
-    this.viewer = new Viewer(byId('viewport'));
+    this.viewer = new Viewer(this.byId('viewport'));
     this.viewer.add(this.surface.group, this.arrows.group, this.phaseLayer.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
     this.gizmo = new PlaneGizmo(this.viewer, (plane) => this.operations.setPlane(plane));
     this.viewer.add(this.gizmo.group);
@@ -139,38 +168,38 @@ export class App {
     // labels keep off the overlays on the view
     this.viewer.labelObstacles = () =>
       ['legend', 'hud', 'status', 'values-legend'].flatMap((id) => {
-        const overlay = byId(id);
+        const overlay = this.byId(id);
         return overlay.hidden || !overlay.textContent ? [] : [overlay.getBoundingClientRect()];
       });
-    this.tables = new RecordTables(byId('tables'), (s) => this.selectInSight(s), (s) => this.hover(s));
+    this.tables = new RecordTables(this.byId('tables'), (s) => this.selectInSight(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
-      byId('traversal'),
+      this.byId('traversal'),
       () => ({ mesh: this.mesh, selection: this.selection, convention: this.convention }),
       (spec) => {
         this.traversalSpec = spec;
         this.drawSelection();
       },
     );
-    this.operations = new OperationsPanel(byId('operations'), {
+    this.operations = new OperationsPanel(this.byId('operations'), {
       start: (request) => void this.start(request),
       edit: (request) => void this.edit(request),
       showPlane: (plane) => this.showPlane(plane),
       setPlaneMode: (mode) => this.gizmo.setMode(mode),
     });
-    this.stepper = new StepperPanel(byId('stepper'), {
+    this.stepper = new StepperPanel(this.byId('stepper'), {
       step: () => void this.step(),
       runToEnd: () => void this.runToEnd(),
       cancel: () => void this.cancel(),
       select: (s) => this.select(s),
     });
-    this.history = new HistoryPanel(byId('history'), { undo: () => void this.undo(), redo: () => void this.redo(), jump: (i) => void this.jump(i) });
-    renderExport(byId('export'), {
+    this.history = new HistoryPanel(this.byId('history'), { undo: () => void this.undo(), redo: () => void this.redo(), jump: (i) => void this.jump(i) });
+    renderExport(this.byId('export'), {
       meshBytes: (format) => this.client.exportMesh(format),
       tablesJson: () => (this.mesh ? JSON.stringify(meshToHalfedgeJSON(this.mesh)) : '{}'),
       png: () => new Promise((resolve, reject) => this.viewer.renderer.domElement.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('no picture'))), 'image/png')),
       baseName: () => (this.snapshot?.file?.name ?? 'mesh').replace(/\.[^.]*$/, ''),
     });
-    this.quiz = new QuizPanel(byId('quiz'), {
+    this.quiz = new QuizPanel(this.byId('quiz'), {
       mesh: () => this.mesh,
       convention: () => this.convention,
       showPath: (question, picked) => {
@@ -179,10 +208,41 @@ export class App {
       },
     });
     this.drawLegend();
-    renderHelp(byId('help-keys'));
-    renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move), this.convention);
+    renderHelp(this.byId('help-keys'));
+    renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), this.convention);
     this.wireControls();
+    if (this.panels) this.embed(this.panels);
     this.drawPanels();
+  }
+
+  /** Stops the workers and the drawing, for an embed taken out of its page. */
+  dispose(): void {
+    this.client.dispose();
+    this.surface.dispose();
+    this.viewer.dispose();
+  }
+
+  private byId<T extends HTMLElement = HTMLElement>(id: string): T {
+    return byId<T>(this.root, id);
+  }
+
+  /**
+   * Shows only the view and the chosen panels, the side ones stacked in the order named: no toolbar,
+   * no tabs (every pane open, its other panels hidden).
+   */
+  private embed(panels: readonly PanelName[]): void {
+    const sections = [...this.root.querySelectorAll<HTMLElement>('[data-panel]')];
+    for (const section of sections) {
+      const at = panels.indexOf(section.dataset.panel as PanelName);
+      section.hidden = at < 0;
+      section.style.order = String(at);
+    }
+    for (const tab of tabs) this.byId(`pane-${tab}`).hidden = false;
+    this.frame.classList.add('embed');
+    this.frame.classList.toggle('embed-side', sections.some((section) => !section.hidden && section.dataset.panel !== 'tables'));
+    for (const part of ['tables', 'legend', 'hud'] as const) this.frame.classList.toggle(`embed-${part}`, panels.includes(part));
+    // no tab opens it here
+    if (panels.includes('practice')) void this.practice().then((panel) => panel.open());
   }
 
   /** The Practice tab's panel, its code loaded on first use: the page's first load does without it. */
@@ -210,7 +270,7 @@ export class App {
       },
       say: (message: string, role?: 'status' | 'alert') => this.say(message, role),
     };
-    this.practicePanel ??= import('./panels/practice.js').then(({ PracticePanel }) => new PracticePanel(byId('practice'), actions));
+    this.practicePanel ??= import('./panels/practice.js').then(({ PracticePanel }) => new PracticePanel(this.byId('practice'), actions));
     return this.practicePanel;
   }
 
@@ -241,7 +301,7 @@ export class App {
       return true;
     } catch (error) {
       this.hideProgress();
-      byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // the menu shows what stays open
+      this.byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // the menu shows what stays open
       if (error instanceof CancelledError) this.say(`${error.message}; the previous mesh stays.`);
       else {
         this.say(`Could not open ${name}: ${(error as Error).message}. The previous mesh stays.`, 'alert');
@@ -271,7 +331,7 @@ export class App {
   async loadSampleList(): Promise<void> {
     const response = await fetch(`${import.meta.env.BASE_URL}models/index.json`);
     this.samples = response.ok ? ((await response.json()) as SampleModel[]) : [];
-    replace(byId('sample-select'), ...this.samples.map((s) => el('option', { value: s.file }, s.title)));
+    replace(this.byId('sample-select'), ...this.samples.map((s) => el('option', { value: s.file }, s.title)));
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -354,24 +414,26 @@ export class App {
     this.snapshot = snapshot;
     // the sample menu names the model the mesh on screen came from, wherever the history is
     this.sample = openedEntry(snapshot)?.sample ?? null;
-    byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // blank for a file of the user's
+    this.byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // blank for a file of the user's
     const mesh = (this.mesh = snapshot.mesh);
     this.surface.update(snapshot.render, snapshot.renderPatch);
     // while stepping, a phase may colour the vertices by a value it computed
     const values = snapshot.stepping ? (snapshot.phase?.values?.vertices ?? null) : null;
-    renderValuesLegend(byId('values-legend'), this.surface.setVertexValues(values), `${snapshot.phase?.name ?? ''}: colour by value`);
+    renderValuesLegend(this.byId('values-legend'), this.surface.setVertexValues(values), `${snapshot.phase?.name ?? ''}: colour by value`);
     if (this.selection && !exists(mesh, this.selection)) this.selection = null;
     if (this.hovered && !exists(mesh, this.hovered)) this.hovered = null;
     this.path = this.path.filter((step) => exists(mesh, step.to));
     this.problemSpec = null;
     this.practiceSpec = null;
+    // edge ids name other edges after a change: the seams are asked for again
+    this.seamSpec = null;
     if (frame) {
       this.selection = null;
       this.path = [];
       this.traversal.stop();
       const planar = snapshot.render.planeNormal !== null;
       this.viewer.setMode(planar ? 'top' : 'perspective');
-      byId('top-view').setAttribute('aria-pressed', String(planar));
+      this.byId('top-view').setAttribute('aria-pressed', String(planar));
       this.frameMesh();
     }
     // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
@@ -379,7 +441,7 @@ export class App {
     this.tables.setMesh(mesh, this.convention);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
-    document.documentElement.classList.toggle('stepping', snapshot.stepping !== null);
+    this.frame.classList.toggle('stepping', snapshot.stepping !== null);
     this.drawLegend();
     const stepping = steppingTitle(snapshot);
     if (stepping) this.say(`${stepping}.`);
@@ -462,15 +524,15 @@ export class App {
   toggleTopView(): void {
     const top = this.viewer.mode !== 'top';
     this.viewer.setMode(top ? 'top' : 'perspective');
-    byId('top-view').setAttribute('aria-pressed', String(top));
+    this.byId('top-view').setAttribute('aria-pressed', String(top));
     this.frameMesh();
   }
 
   /** Lecture-hall mode: large type, thick arrows, high contrast, full screen. */
   setPresentation(on: boolean): void {
     this.scale = on ? 1.8 : 1;
-    document.documentElement.classList.toggle('presentation', on);
-    byId('presentation').setAttribute('aria-pressed', String(on));
+    this.frame.classList.toggle('presentation', on);
+    this.byId('presentation').setAttribute('aria-pressed', String(on));
     this.surface.setEmphasis(this.scale);
     // the room looks at the view: the record tables fold to their title (D opens them)
     this.showTables(!on);
@@ -479,7 +541,7 @@ export class App {
     // the view changed size with the layout: fit the mesh to it once the layout has settled
     requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
     // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
-    if (on && !document.fullscreenElement) document.documentElement.requestFullscreen?.().catch(() => {});
+    if (on && !document.fullscreenElement) this.frame.requestFullscreen?.().catch(() => {});
     if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
   }
 
@@ -501,6 +563,7 @@ export class App {
       model,
       steps,
       selection: this.selection,
+      naming: this.convention,
       camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom },
       mode: this.viewer.mode,
     };
@@ -508,9 +571,10 @@ export class App {
 
   /** Puts back a selection and camera from a link (after its model is open). */
   applyViewState(state: ViewState): void {
+    if (state.naming) this.setConvention(state.naming);
     if (state.mode) {
       this.viewer.setMode(state.mode);
-      byId('top-view').setAttribute('aria-pressed', String(state.mode === 'top'));
+      this.byId('top-view').setAttribute('aria-pressed', String(state.mode === 'top'));
       this.frameMesh();
     }
     if (state.camera) this.viewer.setCamera(state.camera.position, state.camera.target, state.camera.zoom);
@@ -534,18 +598,19 @@ export class App {
   }
 
   showError(title: string, message: string): void {
-    byId('error-title').textContent = title;
-    byId('error-message').textContent = message;
-    byId('error-panel').hidden = false;
+    this.byId('error-title').textContent = title;
+    this.byId('error-message').textContent = message;
+    this.byId('error-panel').hidden = false;
   }
 
   showTab(name: Tab): void {
     if (name !== 'quiz' && this.quizSpec) this.quiz.end();
     // the editor is loaded when the tab is first opened
     if (name === 'practice') void this.practice().then((panel) => panel.open());
+    if (this.panels) return; // an embed shows its panels side by side, without tabs
     for (const tab of tabs) {
-      byId(`tab-${tab}`).setAttribute('aria-selected', String(tab === name));
-      byId(`pane-${tab}`).hidden = tab !== name;
+      this.byId(`tab-${tab}`).setAttribute('aria-selected', String(tab === name));
+      this.byId(`pane-${tab}`).hidden = tab !== name;
     }
   }
 
@@ -585,7 +650,7 @@ export class App {
   /** The File tab, with the list of repairs open. */
   showRepairs(): void {
     this.showTab('file');
-    const first = document.querySelector<HTMLDetailsElement>('#file-info details[data-repair]');
+    const first = this.root.querySelector<HTMLDetailsElement>('#file-info details[data-repair]');
     if (first) {
       first.open = true;
       first.querySelector('summary')?.focus();
@@ -624,6 +689,27 @@ export class App {
     this.drawSelection();
   }
 
+  /**
+   * Marks the seams of the mesh on screen (the edges where the file had split its vertices), or
+   * clears them. Asked of the session each time: an edit renumbers edges.
+   */
+  async toggleSeams(show = !this.seamsShown): Promise<number> {
+    if (!show || !this.mesh) {
+      this.seamSpec = null;
+      this.drawSelection();
+      this.drawPanels();
+      return 0;
+    }
+    const version = this.shown.version;
+    const edges = await this.client.seams();
+    if (this.shown.version !== version) return 0; // the mesh changed meanwhile: those ids are not its edges
+    this.seamSpec = { ...emptyHighlight(), edges: [...edges].map((id) => ({ id, color: colors.seam })) };
+    this.say(`${edges.length} seam edge${edges.length === 1 ? '' : 's'} marked: where the file split its vertices, each corner keeping its own texture coordinate and normal.`);
+    this.drawSelection();
+    this.drawPanels();
+    return edges.length;
+  }
+
   /** Follows a pointer from the selection, extending the breadcrumb. */
   walk(move: Move): boolean {
     if (!this.mesh || !this.selection) {
@@ -632,10 +718,10 @@ export class App {
     }
     const to = walk(this.mesh, this.selection, move);
     if (typeof to === 'string') {
-      byId('walk-message').textContent = to;
+      this.byId('walk-message').textContent = to;
       return false;
     }
-    byId('walk-message').textContent = '';
+    this.byId('walk-message').textContent = '';
     this.selection = to;
     this.path.push({ move, to });
     if (this.quizSpec) this.quiz.end();
@@ -659,10 +745,10 @@ export class App {
 
   setConvention(convention: Convention): void {
     this.convention = convention;
-    byId<HTMLSelectElement>('convention').value = convention;
+    this.byId<HTMLSelectElement>('convention').value = convention;
     // everything that names the vertex of a halfedge speaks the naming chosen
     this.drawLegend();
-    renderWalkButtons(byId('walk-buttons'), (move) => this.walk(move), convention);
+    renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), convention);
     if (this.quiz.active) this.quiz.ask();
     if (this.mesh) this.tables.setMesh(this.mesh, convention);
     this.drawSelection();
@@ -687,7 +773,7 @@ export class App {
   /** Shows a sentence in the status line (`alert` for errors: read out at once), with a button for what follows from it. */
   say(message: string, role: 'status' | 'alert' = 'status', action?: { label: string; run: () => void }): void {
     this.message = message;
-    const status = byId('status');
+    const status = this.byId('status');
     status.setAttribute('role', role);
     status.classList.toggle('error', role === 'alert');
     status.textContent = message;
@@ -707,14 +793,14 @@ export class App {
   private drawLegend(): void {
     const stepping = this.snapshot ? steppingTitle(this.snapshot) : null;
     const phase = stepping ? { title: stepping, explanation: this.snapshot?.phase?.explanation ?? '' } : null;
-    renderLegend(byId('legend'), phase, this.convention);
+    renderLegend(this.byId('legend'), phase, this.convention);
   }
 
   private drawSelection(): void {
     const mesh = this.mesh;
     if (!mesh) return;
     const selected = this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight();
-    const marks = [this.problemSpec, this.practiceSpec].filter((spec) => spec !== null);
+    const marks = [this.seamSpec, this.problemSpec, this.practiceSpec].filter((spec) => spec !== null);
     const spec = this.quizSpec ?? this.traversalSpec ?? marks.reduce(combineHighlights, selected);
     this.selectionLayer.show(mesh, spec, this.scale);
     const phase = this.snapshot?.phase;
@@ -729,12 +815,16 @@ export class App {
     const snapshot = this.snapshot;
     // a pointer in the record is a step of the walk (Back returns); anything else starts a new one
     const follow = (field: string, s: Selection) => void (isMove(field) ? this.walk(field) : this.select(s));
-    renderInspector(byId('record'), byId('convention-note'), this.mesh, this.selection, this.convention, follow);
-    renderBreadcrumb(byId('breadcrumb'), this.path);
+    renderInspector(this.byId('record'), this.byId('convention-note'), this.mesh, this.selection, this.convention, follow);
+    renderBreadcrumb(this.byId('breadcrumb'), this.path);
     if (this.mesh && snapshot) this.operations.update(this.mesh, this.selection, snapshot.unavailable);
     if (snapshot) {
-      renderHud(byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
-      renderFileInfo(byId('file-info'), snapshot.file, snapshot.report, (incident, kind, first) => this.showProblem(incident, kind, first));
+      renderHud(this.byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
+      renderFileInfo(this.byId('file-info'), snapshot.file, snapshot.report, {
+        showProblem: (incident, kind, first) => this.showProblem(incident, kind, first),
+        toggleSeams: () => void this.toggleSeams(),
+        seamsShown: this.seamSpec !== null,
+      });
     }
   }
 
@@ -776,7 +866,7 @@ export class App {
 
   /** Says which arrows are drawn when not all of them are. */
   private showArrowNote(): void {
-    const note = byId('arrow-note');
+    const note = this.byId('arrow-note');
     const mesh = this.mesh;
     note.hidden = !mesh || (!this.arrowsHidden && mesh.nHalfedges <= MAX_ARROWS);
     if (!mesh || note.hidden) return;
@@ -814,48 +904,50 @@ export class App {
   }
 
   private showProgress(label: string, fraction: number): void {
-    byId('progress').hidden = false;
-    byId('progress-label').textContent = label;
-    byId<HTMLProgressElement>('progress-bar').value = fraction;
+    this.byId('progress').hidden = false;
+    this.byId('progress-label').textContent = label;
+    this.byId<HTMLProgressElement>('progress-bar').value = fraction;
   }
 
   private hideProgress(): void {
-    byId('progress').hidden = true;
+    this.byId('progress').hidden = true;
   }
 
   private wireControls(): void {
-    const fileInput = byId<HTMLInputElement>('file-input');
+    const fileInput = this.byId<HTMLInputElement>('file-input');
     fileInput.addEventListener('change', async () => {
       await this.openFiles([...(fileInput.files ?? [])]);
       fileInput.value = '';
     });
-    byId<HTMLSelectElement>('sample-select').addEventListener('change', (event) => void this.openSample((event.target as HTMLSelectElement).value));
-    byId<HTMLSelectElement>('pick-filter').addEventListener('change', (event) => (this.filter = (event.target as HTMLSelectElement).value as PickFilter));
-    byId<HTMLSelectElement>('convention').addEventListener('change', (event) => this.setConvention((event.target as HTMLSelectElement).value as Convention));
-    byId('frame-mesh').addEventListener('click', () => this.frameMesh());
-    byId('frame-selection').addEventListener('click', () => this.frameSelection());
-    byId('top-view').addEventListener('click', () => this.toggleTopView());
-    byId('show-ids').addEventListener('click', () => this.toggleIds());
-    byId('tables-fold').addEventListener('click', () => this.showTables(!this.tablesShown));
-    byId('walk-back').addEventListener('click', () => this.back());
-    byId('cancel').addEventListener('click', () => void this.cancel());
-    byId('presentation').addEventListener('click', () => this.setPresentation(this.scale === 1));
-    byId('share').addEventListener('click', () => this.shareLink());
-    byId('help').addEventListener('click', () => this.toggleHelp());
-    byId('help-close').addEventListener('click', () => this.toggleHelp(false));
-    byId('error-dismiss').addEventListener('click', () => (byId('error-panel').hidden = true));
-    for (const tab of tabs) byId(`tab-${tab}`).addEventListener('click', () => this.showTab(tab));
+    this.byId<HTMLSelectElement>('sample-select').addEventListener('change', (event) => void this.openSample((event.target as HTMLSelectElement).value));
+    this.byId<HTMLSelectElement>('pick-filter').addEventListener('change', (event) => (this.filter = (event.target as HTMLSelectElement).value as PickFilter));
+    this.byId<HTMLSelectElement>('convention').addEventListener('change', (event) => this.setConvention((event.target as HTMLSelectElement).value as Convention));
+    this.byId('frame-mesh').addEventListener('click', () => this.frameMesh());
+    this.byId('frame-selection').addEventListener('click', () => this.frameSelection());
+    this.byId('top-view').addEventListener('click', () => this.toggleTopView());
+    this.byId('show-ids').addEventListener('click', () => this.toggleIds());
+    this.byId('tables-fold').addEventListener('click', () => this.showTables(!this.tablesShown));
+    this.byId('walk-back').addEventListener('click', () => this.back());
+    this.byId('cancel').addEventListener('click', () => void this.cancel());
+    this.byId('presentation').addEventListener('click', () => this.setPresentation(this.scale === 1));
+    this.byId('share').addEventListener('click', () => this.shareLink());
+    this.byId('help').addEventListener('click', () => this.toggleHelp());
+    this.byId('help-close').addEventListener('click', () => this.toggleHelp(false));
+    this.byId('error-dismiss').addEventListener('click', () => (this.byId('error-panel').hidden = true));
+    for (const tab of tabs) this.byId(`tab-${tab}`).addEventListener('click', () => this.showTab(tab));
 
-    // drop a file anywhere on the page
-    const hint = byId('drop-hint');
-    window.addEventListener('dragover', (event) => {
+    // drop a file anywhere on the page (anywhere on an embed)
+    const hint = this.byId('drop-hint');
+    const input = this.input as HTMLElement; // the window hears the same events, of the same types
+    input.addEventListener('dragover', (event) => {
       event.preventDefault();
       hint.hidden = false;
     });
-    window.addEventListener('dragleave', (event) => {
-      if (event.relatedTarget === null) hint.hidden = true;
+    input.addEventListener('dragleave', (event) => {
+      const to = event.relatedTarget;
+      if (to === null || (input instanceof Node && !input.contains(to as Node))) hint.hidden = true;
     });
-    window.addEventListener('drop', async (event) => {
+    input.addEventListener('drop', async (event) => {
       event.preventDefault();
       hint.hidden = true;
       await this.openFiles([...(event.dataTransfer?.files ?? [])]);
@@ -881,19 +973,24 @@ export class App {
     });
     canvas.addEventListener('pointerleave', () => this.hover(null));
 
-    window.addEventListener('keydown', (event) => {
-      if ((event.target as HTMLElement).closest('input, select, textarea')) return;
-      if (handleKey(this, event)) event.preventDefault();
+    input.addEventListener('keydown', (event) => {
+      // the element pressed on, inside an embed's shadow root too (where event.target is the embed)
+      const origin = event.composedPath()[0];
+      if (origin instanceof Element && origin.closest('input, select, textarea, [contenteditable]')) return;
+      if (!handleKey(this, event)) return;
+      event.preventDefault();
+      // a key this view used is not also the slide deck's around it (N is "next slide" in reveal.js)
+      event.stopPropagation();
     });
   }
 
   get helpShown(): boolean {
-    return !byId('help-overlay').hidden;
+    return !this.byId('help-overlay').hidden;
   }
 
   toggleHelp(show = !this.helpShown): void {
-    byId('help-overlay').hidden = !show;
-    if (show) byId('help-close').focus();
+    this.byId('help-overlay').hidden = !show;
+    if (show) this.byId('help-close').focus();
   }
 
   /**
@@ -901,25 +998,25 @@ export class App {
    * mesh alone should fill the screen. The status line stays: it says what just happened.
    */
   toggleOverlays(): void {
-    const hidden = document.documentElement.classList.toggle('overlays-hidden');
+    const hidden = this.frame.classList.toggle('overlays-hidden');
     this.say(hidden ? 'Legend and counts hidden: press K to show them.' : 'Legend and counts shown.');
     this.viewer.requestRender();
   }
 
   /** Shows the record tables, or folds them to their title so the view gets their height. */
   showTables(show: boolean): void {
-    document.documentElement.classList.toggle('tables-folded', !show);
-    byId('tables-fold').setAttribute('aria-expanded', String(show));
+    this.frame.classList.toggle('tables-folded', !show);
+    this.byId('tables-fold').setAttribute('aria-expanded', String(show));
     if (show) this.tables.reveal(this.selection);
   }
 
   get tablesShown(): boolean {
-    return !document.documentElement.classList.contains('tables-folded');
+    return !this.frame.classList.contains('tables-folded');
   }
 
   toggleIds(): void {
     this.showIds = !this.showIds;
-    byId('show-ids').setAttribute('aria-pressed', String(this.showIds));
+    this.byId('show-ids').setAttribute('aria-pressed', String(this.showIds));
     if (this.showIds && this.mesh && this.mesh.nVertices + this.mesh.nFaces > MAX_ID_LABELS) {
       this.say(`Ids are labelled on meshes of up to ${MAX_ID_LABELS} vertices and faces; use the tables for this one.`);
     }

@@ -77,6 +77,8 @@ export function automation(app: App) {
       return s ? elementName(s) : null;
     },
     setConvention: (convention: 'origin' | 'target') => app.setConvention(convention),
+    /** Marks the seams (edges where the file split its vertices; the File tab's button) or clears them; resolves to how many were marked. */
+    showSeams: (on: boolean) => app.toggleSeams(on),
     setPresentation: (on: boolean) => app.setPresentation(on),
     start: (request: OperationRequest) => app.start(request).then(summary),
     step: () => app.step().then(summary),
@@ -136,6 +138,8 @@ export function automation(app: App) {
       problems: app.snapshot?.problems ?? [],
       file: app.snapshot?.file ?? null,
       repairs: app.snapshot?.report?.repairs.map((r) => ({ kind: r.kind, count: r.count })) ?? [],
+      /** Whether the seams are marked in the view. */
+      seamsShown: app.seamsShown,
       phase: phaseState(app.snapshot),
       /** True until the full counts and checks of the last change have arrived (`stats` beyond V, E, F, χ; `problems`). */
       pending: app.snapshot?.pending ?? false,

@@ -11,6 +11,8 @@ export const colors = {
   origin: '#CC79A7',
   boundary: '#8a8a8a',
   problem: '#D55E00',
+  /** Edges where a file split its vertices (the File tab's seams). */
+  seam: '#7B2CBF',
   halfedge: '#4a4a4a',
   surface: '#dfe3e8',
   surfaceBack: '#9aa5b1',

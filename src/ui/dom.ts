@@ -34,8 +34,9 @@ export function replace(parent: Element, ...children: Child[]): void {
   append(parent, children);
 }
 
-export function byId<T extends HTMLElement = HTMLElement>(id: string): T {
-  const element = document.getElementById(id);
+/** The element of an id in the page, or in an embed's shadow root. */
+export function byId<T extends HTMLElement = HTMLElement>(root: Document | ShadowRoot, id: string): T {
+  const element = root.getElementById(id);
   if (!element) throw new Error(`the page has no #${id}`);
   return element as T;
 }
@@ -45,7 +46,8 @@ export function byId<T extends HTMLElement = HTMLElement>(id: string): T {
  * redraws itself under a pressed key (Next, Previous) stays in the keyboard's hands.
  */
 export function replaceKeepingFocus(parent: Element, ...children: Child[]): void {
-  const focused = document.activeElement;
+  // in an embed's shadow root, the document's active element is the embed itself
+  const focused = (parent.getRootNode() as Document | ShadowRoot).activeElement;
   const name = focused instanceof HTMLElement && parent.contains(focused) ? focused.getAttribute('aria-label') : null;
   replace(parent, ...children);
   if (name) parent.querySelector<HTMLElement>(`[aria-label="${CSS.escape(name)}"]`)?.focus();

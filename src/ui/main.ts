@@ -1,10 +1,16 @@
-/** The page's entry: start the app, expose the automation object, open the first model. */
-import { App } from './app.js';
+/**
+ * The page's entry: start the app (the whole app, or with `?embed` only the view and the panels
+ * `panels=` names), expose the automation object, open the first model.
+ */
+import { App, pageHost } from './app.js';
 import { automation } from './automation.js';
+import { parsePanels, unknownPanelsMessage } from './embed.js';
 import { keepForOffline } from './offline.js';
 import { decodeViewState } from './share.js';
 
-const app = new App();
+const params = new URLSearchParams(location.search);
+const embed = parsePanels(params.get('panels'));
+const app = new App(pageHost(params.has('embed') ? embed.panels : null));
 window.halfedgeLab = automation(app);
 
 /**
@@ -13,6 +19,7 @@ window.halfedgeLab = automation(app);
  */
 async function openFirstModel(): Promise<void> {
   const state = decodeViewState(location.search);
+  if (state.naming) app.setConvention(state.naming);
   await app.loadSampleList();
   const first = app.samples[0]?.file ?? 'tetrahedron.off';
   if (!state.model) {
@@ -22,11 +29,12 @@ async function openFirstModel(): Promise<void> {
   } else if (await app.openSample(first)) {
     app.say(`This link names a sample that is not here (${state.model}), so ${first} is open instead.`, 'alert');
   }
+  if (params.has('embed') && embed.unknown.length > 0) app.say(unknownPanelsMessage(embed.unknown), 'alert');
 }
 
 /** `?exercise=…` opens an exercise in the Practice tab (after the first model: the view is never empty). */
 async function openExercise(): Promise<void> {
-  const value = new URLSearchParams(location.search).get('exercise');
+  const value = params.get('exercise');
   if (!value) return;
   try {
     const { exerciseFromLink } = await import('./practice-link.js');

@@ -1,10 +1,11 @@
 /**
  * A link that restores what a lecturer shows: the sample model, the operations and edits that led
  * from it to the mesh on screen (replayed on opening), the selection and the camera.
- * `?model=torus.off&ops=[…]&select=h17&camera=…&mode=top`. Uploaded files never leave the
+ * `?model=torus.off&ops=[…]&select=h17&naming=target&camera=…&mode=top`. Uploaded files never leave the
  * browser, so a link can only name a sample model.
  */
 import type { EditRequest, OperationRequest } from '../workers/protocol.js';
+import type { Convention } from './records.js';
 import { parseElementName, type Selection } from './selection.js';
 
 /** One step from the sample to what is on screen: an operation run to its end, or a local edit. */
@@ -15,6 +16,8 @@ export interface ViewState {
   /** The steps from the model to the mesh shown, in order. */
   steps: ReplayStep[];
   selection: Selection | null;
+  /** The halfedge naming the view speaks (origin or target); null: the page's default. */
+  naming: Convention | null;
   /** Camera position, orbit target, zoom (orthographic). */
   camera: { position: number[]; target: number[]; zoom: number } | null;
   mode: 'perspective' | 'top' | null;
@@ -25,6 +28,7 @@ export function encodeViewState(state: ViewState): string {
   if (state.model) params.set('model', state.model);
   if (state.steps.length > 0) params.set('ops', JSON.stringify(state.steps));
   if (state.selection) params.set('select', `${{ vertex: 'v', edge: 'e', face: 'f', halfedge: 'h' }[state.selection.kind]}${state.selection.id}`);
+  if (state.naming) params.set('naming', state.naming);
   if (state.camera) {
     const numbers = [...state.camera.position, ...state.camera.target, state.camera.zoom].map((x) => +x.toPrecision(6));
     params.set('camera', numbers.join(','));
@@ -42,10 +46,12 @@ export function decodeViewState(query: string): ViewState {
       ? { position: numbers.slice(0, 3), target: numbers.slice(3, 6), zoom: numbers[6] > 0 ? numbers[6] : 1 }
       : null;
   const mode = params.get('mode');
+  const naming = params.get('naming');
   return {
     model: params.get('model'),
     steps: replaySteps(params.get('ops')),
     selection: parseElementName(params.get('select') ?? ''),
+    naming: naming === 'origin' || naming === 'target' ? naming : null,
     camera,
     mode: mode === 'top' || mode === 'perspective' ? mode : null,
   };

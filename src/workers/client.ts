@@ -134,6 +134,11 @@ export class SessionClient {
   details(): Promise<SnapshotDetails> {
     return Promise.race([this.session.remote.details(), this.session.stopped]);
   }
+  /** The seam edges of the mesh on screen (see `seamEdges`). */
+  seams(): Promise<Int32Array> {
+    return Promise.race([this.session.remote.seams(), this.session.stopped]);
+  }
+
   /** The session's fingerprint of its mesh, and this page's of its copy: equal when the copy is right. */
   async fingerprints(): Promise<{ session: string; page: string | null }> {
     const session = await Promise.race([this.session.remote.fingerprint(), this.session.stopped]);

@@ -1,5 +1,5 @@
 /** Parse and build one file: the work of the loader worker (and of tests, without a worker). */
-import { buildMesh, serializeMesh } from '../core/index.js';
+import { buildMesh, seamEdges, serializeMesh } from '../core/index.js';
 import { readMeshAsync } from '../core/io/index.js';
 import type { LoadedFile, ProgressListener } from './protocol.js';
 
@@ -26,6 +26,7 @@ export async function loadFile(bytes: Uint8Array, name: string, onProgress?: Pro
       counts: file.counts,
       comments: file.comments,
       notes: file.notes,
+      seams: mesh.halfedgeAttributes.size > 0 ? seamEdges(mesh).length : null,
     },
   };
 }

@@ -36,6 +36,8 @@ export interface FileInfo {
   counts: { vertices: number; faces: number };
   comments: string[];
   notes: string[];
+  /** Edges where the file split its vertices (corner values differ across them: see `seamEdges`); null when it has no per-corner values. */
+  seams: number | null;
 }
 
 /** A parsed and built file, as the loader worker hands it over. */
@@ -203,6 +205,8 @@ export interface SessionApi {
   exportMesh(format: string): Promise<Uint8Array>;
   /** The fingerprint of the mesh of the last snapshot (`meshFingerprint`), to check the page's copy. */
   fingerprint(): Promise<string>;
+  /** The seam edges of the mesh of the last snapshot (`seamEdges`). */
+  seams(): Promise<Int32Array>;
   setProgressListener(listener: ProgressListener | null): Promise<void>;
 }
 

@@ -27,6 +27,7 @@ import {
   pointerDiffOf,
   type PointerDiff,
   positionsChange,
+  seamEdges,
   type SerializedMesh,
   serializeMesh,
   TopologyError,
@@ -224,6 +225,11 @@ export class EditingSession {
   /** The fingerprint of the mesh of the last snapshot: a test that the page's copy equals it. */
   fingerprint(): string {
     return meshFingerprint(this.shownMesh());
+  }
+
+  /** The seam edges of the mesh of the last snapshot (see `seamEdges`). */
+  seams(): Int32Array {
+    return seamEdges(this.shownMesh());
   }
 
   /** Bytes the history keeps (see `History`): a test of its thrift. */

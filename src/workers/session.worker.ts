@@ -15,6 +15,10 @@ const api: SessionApi = {
   snapshot: async () => send(session.snapshot()),
   details: async () => session.details(),
   fingerprint: async () => session.fingerprint(),
+  seams: async () => {
+    const edges = session.seams();
+    return transfer(edges, [edges.buffer]);
+  },
   start: async (request) => send(session.start(request)),
   step: async () => send(session.step()),
   runToEnd: async () => send(await session.runToEnd()),

@@ -65,7 +65,7 @@ describe('quiz questions', () => {
 });
 
 describe('share links', () => {
-  it('round-trip the model, selection, camera and mode', () => {
+  it('round-trip the model, selection, naming, camera and mode', () => {
     const state = {
       model: 'torus.off',
       steps: [
@@ -73,6 +73,7 @@ describe('share links', () => {
         { kind: 'edit' as const, request: { kind: 'flip-edge' as const, edge: 3 } },
       ],
       selection: { kind: 'halfedge' as const, id: 17 },
+      naming: 'target' as const,
       camera: { position: [1, 2.5, -3], target: [0, 0, 0.25], zoom: 1.5 },
       mode: 'top' as const,
     };
@@ -80,10 +81,11 @@ describe('share links', () => {
   });
 
   it('drop what is malformed instead of trusting it', () => {
-    expect(decodeViewState('model=cube.off&ops=[{"kind":"eval"}]&select=x9&camera=1,2,nan&mode=sideways')).toEqual({
+    expect(decodeViewState('model=cube.off&ops=[{"kind":"eval"}]&select=x9&naming=tail&camera=1,2,nan&mode=sideways')).toEqual({
       model: 'cube.off',
       steps: [],
       selection: null,
+      naming: null,
       camera: null,
       mode: null,
     });

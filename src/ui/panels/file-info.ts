@@ -8,12 +8,14 @@ import type { FileInfo } from '../../workers/protocol.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
 
-export function renderFileInfo(
-  container: HTMLElement,
-  file: FileInfo | null,
-  report: BuildReport | null,
-  showProblem: (incident: RepairIncident, kind: string, first: Selection) => void,
-): void {
+/** What the File tab can do in the view: show a repair's incident, show or hide the seams. */
+export interface FileInfoActions {
+  showProblem: (incident: RepairIncident, kind: string, first: Selection) => void;
+  toggleSeams: () => void;
+  seamsShown: boolean;
+}
+
+export function renderFileInfo(container: HTMLElement, file: FileInfo | null, report: BuildReport | null, actions: FileInfoActions): void {
   if (!file) {
     replace(container, el('p', { class: 'note' }, 'No file yet.'));
     return;
@@ -24,6 +26,17 @@ export function renderFileInfo(
     el('strong', {}, file.name),
     ` — ${formatName(file)}, ${file.counts.vertices} vertices and ${file.counts.faces} faces in the file`,
   );
+  const seams =
+    file.seams === null
+      ? null
+      : el(
+          'p',
+          { class: 'seams' },
+          `${file.seams} seam edge${file.seams === 1 ? '' : 's'}: where the file split its vertices along texture coordinates or normals. Welded, each corner keeps its own values. `,
+          file.seams > 0
+            ? el('button', { type: 'button', 'aria-pressed': String(actions.seamsShown), onclick: actions.toggleSeams }, actions.seamsShown ? 'Hide the seams' : 'Show the seams')
+            : null,
+        );
   const list = (title: string, lines: string[]) =>
     lines.length ? el('details', {}, el('summary', {}, `${title} (${lines.length})`), el('ul', {}, ...lines.map((line) => el('li', {}, line)))) : null;
   const repairs = report?.repairs.length
@@ -47,7 +60,7 @@ export function renderFileInfo(
                   target
                     ? el(
                         'button',
-                        { type: 'button', class: 'link', 'aria-label': `Show: ${incident.message}`, onclick: () => showProblem(incident, repair.kind, target) },
+                        { type: 'button', class: 'link', 'aria-label': `Show: ${incident.message}`, onclick: () => actions.showProblem(incident, repair.kind, target) },
                         incident.message,
                       )
                     : incident.message,
@@ -59,7 +72,7 @@ export function renderFileInfo(
         ),
       )
     : el('p', { class: 'note' }, 'No repairs were needed: the file holds a clean, oriented, manifold mesh.');
-  replace(container, facts, list('Notes', file.notes), list('Comments in the file', file.comments), repairs);
+  replace(container, facts, seams, list('Notes', file.notes), list('Comments in the file', file.comments), repairs);
 }
 
 /** The element a repair incident is shown at: its last vertex (a copy the repair made), else face or halfedge. */

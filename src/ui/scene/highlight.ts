@@ -10,13 +10,14 @@ import {
   Float32BufferAttribute,
   Group,
   InstancedMesh,
-  LineBasicMaterial,
-  LineSegments,
   Mesh,
   MeshBasicMaterial,
   Points,
   PointsMaterial,
 } from 'three';
+import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
+import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
+import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
 import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import type { HalfedgeMesh } from '../../core/index.js';
 import { newPlacement, placeArrow } from './arrow-placement.js';
@@ -36,6 +37,8 @@ export function emptyHighlight(): HighlightSpec {
 }
 
 const shape = arrowShape(1);
+/** How wide a highlighted edge is drawn, in CSS pixels (times the presentation scale). */
+const EDGE_LINE_PIXELS = 3;
 
 export class HighlightLayer {
   readonly group = new Group();
@@ -93,7 +96,13 @@ export class HighlightLayer {
           lineColors.push(c.r, c.g, c.b);
         }
       }
-      this.group.add(withNoRaycast(new LineSegments(geometry(points, lineColors), new LineBasicMaterial({ vertexColors: true, transparent, opacity: this.opacity }))));
+      // lines of a few pixels whatever the zoom: a WebGL line is one pixel, too thin for a room
+      const lines = new LineSegments2(
+        new LineSegmentsGeometry().setPositions(points).setColors(lineColors),
+        new LineMaterial({ vertexColors: true, linewidth: EDGE_LINE_PIXELS * scale, transparent, opacity: this.opacity }),
+      );
+      lines.renderOrder = 2;
+      this.group.add(withNoRaycast(lines));
     }
     if (spec.vertices.length) {
       const points: number[] = [];
@@ -198,7 +207,7 @@ function geometry(points: number[], pointColors: number[]): BufferGeometry {
   return g;
 }
 
-function withNoRaycast<T extends Mesh | Points | LineSegments>(object: T): T {
+function withNoRaycast<T extends Mesh | Points>(object: T): T {
   object.raycast = () => {};
   return object;
 }

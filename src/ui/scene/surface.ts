@@ -52,6 +52,7 @@ export class SurfaceLayer {
   /** The median length of a sample of the edges: how fine the mesh is. */
   edgeLength = 0;
   private pickingWorker: Remote<PickingApi> | null = null;
+  private pickingThread: Worker | null = null;
   /** Resolves when the picking worker holds the current mesh; null while picking happens here. */
   private workerReady: Promise<void> | null = null;
 
@@ -192,8 +193,14 @@ export class SurfaceLayer {
 
   /** Hands the session's copies to the picking worker (transferred: the page copies nothing). */
   private sendToPickingWorker({ positions, triangles }: NonNullable<RenderBuffers['picking']>): Promise<void> {
-    this.pickingWorker ??= wrap<PickingApi>(new Worker(new URL('./picking.worker.ts', import.meta.url), { type: 'module' }));
+    this.pickingThread ??= new Worker(new URL('./picking.worker.ts', import.meta.url), { type: 'module' });
+    this.pickingWorker ??= wrap<PickingApi>(this.pickingThread);
     return this.pickingWorker.setMesh(transfer(positions, [positions.buffer]), transfer(triangles, [triangles.buffer]));
+  }
+
+  /** Stops the picking worker (an embed taken out of its page). */
+  dispose(): void {
+    this.pickingThread?.terminate();
   }
 }
 

@@ -41,6 +41,8 @@ export class Viewer {
   /** Called before each draw (the app shows or hides detail for the zoom). */
   beforeDraw: (() => void) | null = null;
   private needsRender = true;
+  private disposed = false;
+  private readonly resizeObserver = new ResizeObserver(() => this.resize());
   private readonly light = new DirectionalLight(0xffffff, 1.6);
 
   constructor(readonly container: HTMLElement) {
@@ -58,9 +60,10 @@ export class Viewer {
     this.controls = new OrbitControls(this.perspective, this.renderer.domElement);
     this.controls.enableDamping = false;
     this.controls.addEventListener('change', () => this.requestRender());
-    new ResizeObserver(() => this.resize()).observe(container);
+    this.resizeObserver.observe(container);
     this.resize();
     const loop = () => {
+      if (this.disposed) return;
       this.frames++;
       if (this.needsRender) {
         this.needsRender = false;
@@ -77,6 +80,15 @@ export class Viewer {
 
   requestRender(): void {
     this.needsRender = true;
+  }
+
+  /** Stops drawing and gives the WebGL context back (a page holds only a few at once). */
+  dispose(): void {
+    this.disposed = true;
+    this.resizeObserver.disconnect();
+    this.controls.dispose();
+    this.renderer.dispose();
+    this.renderer.forceContextLoss();
   }
 
   add(...objects: Object3D[]): void {
