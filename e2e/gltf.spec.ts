@@ -71,4 +71,31 @@ test.describe('glTF in the app', () => {
     expect([mesh.nVertices, mesh.nEdges, mesh.nFaces]).toEqual([122, 3 * 236 / 2, 236]);
     expect(appErrors(page)).toEqual([]);
   });
+
+  test('opens a file again welding within a distance: a cube whose sides were written a hair apart closes', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    const document = new Document();
+    addCube(document, 'Box');
+    const position = document.getRoot().listMeshes()[0]!.listPrimitives()[0]!.getAttribute('POSITION')!;
+    position.setArray(Float32Array.from(position.getArray()! as Float32Array, (x, i) => (Math.floor(i / 12) % 2 ? x + 1e-5 : x)));
+    await page.locator('#file-input').setInputFiles({ name: 'ajar.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(await glbOf(document)) });
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('ajar.glb');
+    expect(await stats(page)).toMatchObject({ vertices: 14 });
+    expect((await stats(page)).boundaryLoops).toBeGreaterThan(0);
+
+    await page.getByRole('tab', { name: 'File' }).click();
+    await expect(page.locator('#file-info')).toContainText('Vertices at exactly equal positions were welded.');
+    // a distance that is none: said, and the mesh stays
+    await page.getByRole('spinbutton', { name: 'Weld distance' }).fill('-1');
+    await page.getByRole('button', { name: 'Open again, welding within this distance' }).click();
+    await expect(page.locator('#status')).toContainText('The weld distance must be a number of 0 or more');
+    expect(await stats(page)).toMatchObject({ vertices: 14 });
+
+    await page.getByRole('spinbutton', { name: 'Weld distance' }).fill('0.0001');
+    await page.getByRole('spinbutton', { name: 'Weld distance' }).press('Enter');
+    await expect.poll(async () => (await stats(page)).vertices).toBe(8);
+    expect(await stats(page)).toMatchObject({ vertices: 8, edges: 18, faces: 12, boundaryLoops: 0 });
+    await expect(page.locator('#file-info')).toContainText('Vertices within 0.0001 of each other were welded.');
+    expect(appErrors(page)).toEqual([]);
+  });
 });

@@ -26,10 +26,38 @@ export interface LoadedMesh extends BuildResult {
   file: MeshFile;
 }
 
-export async function loadMesh(path: string): Promise<LoadedMesh> {
+/** How every command reads its input mesh (`--weld-tolerance D`: see `takeReadSettings`). */
+export interface ReadSettings {
+  weldTolerance?: number;
+}
+
+/**
+ * Takes the options of reading out of a command's arguments: `--weld-tolerance D` (or `=D`), the
+ * distance within which STL and glTF vertices are welded (default: exactly equal positions).
+ */
+export function takeReadSettings(args: string[]): { settings: ReadSettings; rest: string[] } {
+  const settings: ReadSettings = {};
+  const rest: string[] = [];
+  for (let i = 0; i < args.length; i++) {
+    const arg = args[i]!;
+    if (arg !== '--weld-tolerance' && !arg.startsWith('--weld-tolerance=')) {
+      rest.push(arg);
+      continue;
+    }
+    const text = arg.includes('=') ? arg.slice(arg.indexOf('=') + 1) : args[++i];
+    const value = Number(text);
+    if (text === undefined || text.trim() === '' || !Number.isFinite(value) || value < 0) {
+      throw new UsageError(`--weld-tolerance takes a distance of 0 or more, not ${text === undefined ? 'nothing' : `'${text}'`}`);
+    }
+    settings.weldTolerance = value;
+  }
+  return { settings, rest };
+}
+
+export async function loadMesh(path: string, settings: ReadSettings = {}): Promise<LoadedMesh> {
   const bytes = readBytes(path);
   try {
-    const file = await readMeshAsync(bytes, { fileName: basename(path), resources: gltfResources(path, bytes) });
+    const file = await readMeshAsync(bytes, { fileName: basename(path), resources: gltfResources(path, bytes), weldTolerance: settings.weldTolerance });
     return { path, file, ...buildMesh(file.soup) };
   } catch (error) {
     // name the file: the parser only knows the place inside it

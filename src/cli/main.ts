@@ -6,11 +6,12 @@
  * needed repairs), 2 a bad file or bad arguments, with one line on stderr saying what and where.
  */
 import { commands } from './commands/index.js';
-import { UsageError, reportFailure } from './io.js';
+import { reportFailure, takeReadSettings, UsageError } from './io.js';
 
 function usage(): string {
   const lines = Object.values(commands).map((c) => `  ${c.usage.padEnd(58)} ${c.summary}`);
-  return ['usage: halfedge-lab COMMAND [options]', '', 'commands:', ...lines].join('\n');
+  const reading = `  ${'--weld-tolerance D'.padEnd(58)} weld STL and glTF vertices within D (default: equal positions only)`;
+  return ['usage: halfedge-lab COMMAND [options]', '', 'commands:', ...lines, '', 'every command that reads a mesh also takes:', reading].join('\n');
 }
 
 async function main(argv: string[]): Promise<number> {
@@ -21,7 +22,8 @@ async function main(argv: string[]): Promise<number> {
   }
   const command = commands[name];
   if (!command) throw new UsageError(`unknown command '${name}' (try --help)`);
-  return command.run(rest);
+  const { settings, rest: args } = takeReadSettings(rest);
+  return command.run(args, settings);
 }
 
 main(process.argv.slice(2)).then(

@@ -19,7 +19,7 @@ import {
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
-import type { EditRequest, OperationRequest } from '../workers/protocol.js';
+import type { EditRequest, OpenOptions, OperationRequest } from '../workers/protocol.js';
 import { byId, el, replace } from './dom.js';
 import { combineHighlights, hoverHighlight, phaseHighlight, problemHighlight, quizHighlight, selectionHighlight } from './highlights.js';
 import { renderExport } from './panels/export.js';
@@ -98,6 +98,8 @@ export class App {
   scale = 1;
   /** The sample model open now, which a link can name; null for a file of the user's. */
   private sample: string | null = null;
+  /** The files the user last opened (picked or dropped), to open again with another weld distance. */
+  private userFiles: File[] | null = null;
   /** True while the arrows are hidden for being too small at this zoom (see fitDetail). */
   private arrowsHidden = false;
   /** Calls of refreshArrows so far: one that waited must not undo a later one. */
@@ -281,19 +283,45 @@ export class App {
    * Opens what was picked or dropped: one mesh file, or a `.gltf` with the files it names (its
    * `.bin` buffers) picked or dropped together with it.
    */
-  async openFiles(files: File[]): Promise<boolean> {
+  async openFiles(files: File[], weldTolerance = 0): Promise<boolean> {
     const main = files.find((f) => /\.gltf$/i.test(f.name)) ?? files.find((f) => !/\.(bin|png|jpe?g|webp|ktx2)$/i.test(f.name)) ?? files[0];
     if (!main) return false;
     const others = files.filter((f) => f !== main);
     const resources = new Map(await Promise.all(others.map(async (f) => [f.name, new Uint8Array(await f.arrayBuffer())] as const)));
-    return this.openBytes(new Uint8Array(await main.arrayBuffer()), main.name, null, resources.size > 0 ? resources : undefined);
+    const opened = await this.openBytes(new Uint8Array(await main.arrayBuffer()), main.name, null, { resources: resources.size > 0 ? resources : undefined, weldTolerance });
+    // kept (a File is a handle, not a copy) to open again with another weld distance
+    if (opened) {
+      this.userFiles = files;
+      this.drawPanels(); // the File tab offers to open it again
+    }
+    return opened;
   }
 
-  /** Opens a file's bytes; `sample` names the sample model they are (null: a file of the user's). */
-  async openBytes(bytes: Uint8Array, name: string, sample: string | null = null, resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): Promise<boolean> {
+  /**
+   * Opens the user's file again, welding its vertices within `weldTolerance` (STL, glTF): the
+   * File tab's Reopen. False when the mesh on screen is not from a file the page still has.
+   */
+  async reopen(weldTolerance: number): Promise<boolean> {
+    if (!(weldTolerance >= 0 && Number.isFinite(weldTolerance))) {
+      this.say(`The weld distance must be a number of 0 or more, not ${weldTolerance}.`, 'alert');
+      return false;
+    }
+    const files = this.userFiles;
+    if (!files?.some((f) => f.name === this.snapshot?.file?.name)) {
+      this.say('Only a file opened from this computer can be opened again; open it once more.', 'alert');
+      return false;
+    }
+    return this.openFiles(files, weldTolerance);
+  }
+
+  /**
+   * Opens a file's bytes; `sample` names the sample model they are (null: a file of the user's).
+   * `options`: the files a `.gltf` names, and the weld distance (see `OpenOptions`).
+   */
+  async openBytes(bytes: Uint8Array, name: string, sample: string | null = null, options: OpenOptions = {}): Promise<boolean> {
     try {
       this.say(`Reading ${name}…`);
-      const snapshot = await this.client.open(bytes, name, sample, resources);
+      const snapshot = await this.client.open(bytes, name, sample, options);
       this.show(snapshot, true);
       const repairs = snapshot.report?.repairs ?? [];
       if (repairs.length > 0) this.announceRepairs(name, repairs);
@@ -823,6 +851,7 @@ export class App {
       renderFileInfo(this.byId('file-info'), snapshot.file, snapshot.report, {
         showProblem: (incident, kind, first) => this.showProblem(incident, kind, first),
         toggleSeams: () => void this.toggleSeams(),
+        reopen: this.userFiles?.some((f) => f.name === snapshot.file?.name) ? (tolerance: number) => void this.reopen(tolerance) : null,
         seamsShown: this.seamSpec !== null,
       });
     }

@@ -26,15 +26,14 @@ export function automation(app: App) {
     ready: app.ready,
     /**
      * Opens a file from bytes; resolves true when it loaded, false on a parse error (shown on the
-     * page). `files`: for a `.gltf`, the files it names (its `.bin`), by name.
+     * page). `files`: for a `.gltf`, the files it names (its `.bin`), by name; `options.weldTolerance`:
+     * weld STL and glTF vertices within this distance.
      */
-    open: (bytes: Uint8Array | ArrayBuffer | number[], name: string, files?: Record<string, Uint8Array | ArrayBuffer | number[]>) =>
-      app.openBytes(
-        bytesOf(bytes),
-        name,
-        null,
-        files ? new Map(Object.entries(files).map(([file, data]) => [file, bytesOf(data)])) : undefined,
-      ),
+    open: (bytes: Uint8Array | ArrayBuffer | number[], name: string, files?: Record<string, Uint8Array | ArrayBuffer | number[]>, options: { weldTolerance?: number } = {}) =>
+      app.openBytes(bytesOf(bytes), name, null, {
+        resources: files ? new Map(Object.entries(files).map(([file, data]) => [file, bytesOf(data)])) : undefined,
+        weldTolerance: options.weldTolerance,
+      }),
     /** Opens one of the sample models by file name (see `samples()`). */
     openSample: (file: string) => app.openSample(file),
     samples: () => app.samples.map((s) => s.file),

@@ -19,6 +19,7 @@ import {
   type EditRequest,
   installErrorTransfer,
   type LoaderApi,
+  type OpenOptions,
   type OperationRequest,
   type ProgressEvent,
   type SessionApi,
@@ -80,16 +81,17 @@ export class SessionClient {
   /**
    * Parses and builds a file off the session, then makes it the current mesh. `bytes` is
    * transferred (it is empty afterwards). A parse error leaves the session as it was.
-   * `resources`: the files a `.gltf` names (its `.bin` buffers), opened together with it.
+   * `options`: the files a `.gltf` names (its `.bin` buffers), opened together with it; the
+   * distance within which STL and glTF vertices weld.
    */
-  async open(bytes: Uint8Array, name: string, sample: string | null = null, resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): Promise<PageSnapshot> {
+  async open(bytes: Uint8Array, name: string, sample: string | null = null, options: OpenOptions = {}): Promise<PageSnapshot> {
     this.stopLoading(new CancelledError(`opening ${name} replaced an earlier load`));
     const loader = (this.loader = live<LoaderApi>(this.createLoaderWorker(), () =>
       new WorkerStoppedError(`the loader stopped while reading ${name} (is the file larger than this browser can hold?)`),
     ));
     try {
       const progress = proxy((event: ProgressEvent) => this.onProgress?.(event));
-      const loaded = await Promise.race([loader.remote.load(transfer(bytes, [bytes.buffer as ArrayBuffer]), name, progress, resources), loader.stopped]);
+      const loaded = await Promise.race([loader.remote.load(transfer(bytes, [bytes.buffer as ArrayBuffer]), name, progress, options), loader.stopped]);
       return await this.call((session) => session.adopt(transfer(loaded, transferables(loaded)), sample));
     } finally {
       if (this.loader === loader) this.loader = null;

@@ -11,5 +11,5 @@
 export { CancelledError, SessionClient, type SessionClientOptions, WorkerStoppedError } from './client.js';
 export { PageCopy, type PageSnapshot } from './page-copy.js';
 export type { EditRequest, OperationRequest } from './operations.js';
-export type { FileInfo, HistoryItem, LoadedFile, ProgressEvent, MeshPatch, RenderBuffers, RenderPatch, SessionApi, Snapshot, SnapshotDetails, SteppingState } from './protocol.js';
+export type { FileInfo, HistoryItem, LoadedFile, OpenOptions, ProgressEvent, MeshPatch, RenderBuffers, RenderPatch, SessionApi, Snapshot, SnapshotDetails, SteppingState } from './protocol.js';
 export { EditingSession } from './session.js';

@@ -1,16 +1,18 @@
 /** Parse and build one file: the work of the loader worker (and of tests, without a worker). */
 import { buildMesh, seamEdges, serializeMesh } from '../core/index.js';
 import { readMeshAsync } from '../core/io/index.js';
-import type { LoadedFile, ProgressListener } from './protocol.js';
+import type { LoadedFile, OpenOptions, ProgressListener } from './protocol.js';
 
 /** Parsing is most of the work; building the rest. */
 const READ_SHARE = 0.6;
 
-/** `resources`: the files a `.gltf` names (its buffers), opened together with it. */
-export async function loadFile(bytes: Uint8Array, name: string, onProgress?: ProgressListener, resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): Promise<LoadedFile> {
+/** `options`: the files a `.gltf` names (its buffers), opened together with it; the weld distance. */
+export async function loadFile(bytes: Uint8Array, name: string, onProgress?: ProgressListener, options: OpenOptions = {}): Promise<LoadedFile> {
+  const weldTolerance = options.weldTolerance ?? 0;
   const file = await readMeshAsync(bytes, {
     fileName: name,
-    resources,
+    resources: options.resources,
+    weldTolerance,
     onProgress: (fraction) => onProgress?.({ label: `reading ${name}`, fraction: READ_SHARE * fraction }),
   });
   const { mesh, report } = buildMesh(file.soup, {
@@ -26,6 +28,7 @@ export async function loadFile(bytes: Uint8Array, name: string, onProgress?: Pro
       counts: file.counts,
       comments: file.comments,
       notes: file.notes,
+      weldTolerance,
       seams: mesh.halfedgeAttributes.size > 0 ? seamEdges(mesh).length : null,
     },
   };

@@ -6,8 +6,8 @@ import { installErrorTransfer, type LoaderApi, transferables } from './protocol.
 installErrorTransfer();
 
 const loader: LoaderApi = {
-  async load(bytes, name, onProgress, resources) {
-    const loaded = await loadFile(bytes, name, throttle(onProgress), resources);
+  async load(bytes, name, onProgress, options) {
+    const loaded = await loadFile(bytes, name, throttle(onProgress), options);
     return transfer(loaded, transferables(loaded));
   },
 };

@@ -36,8 +36,16 @@ export interface FileInfo {
   counts: { vertices: number; faces: number };
   comments: string[];
   notes: string[];
+  /** The distance within which the file's vertices were welded (STL, glTF; 0: equal positions only). */
+  weldTolerance: number;
   /** Edges where the file split its vertices (corner values differ across them: see `seamEdges`); null when it has no per-corner values. */
   seams: number | null;
+}
+
+/** How a file is read: the files a `.gltf` names (its `.bin` buffers), and the distance within which STL and glTF vertices weld. */
+export interface OpenOptions {
+  resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>;
+  weldTolerance?: number;
 }
 
 /** A parsed and built file, as the loader worker hands it over. */
@@ -212,8 +220,7 @@ export interface SessionApi {
 
 /** The loader worker: parses and builds one file, then is thrown away (cancel = terminate it). */
 export interface LoaderApi {
-  /** `resources`: the files a `.gltf` names, by name. */
-  load(bytes: Uint8Array, name: string, onProgress: ProgressListener, resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>): Promise<LoadedFile>;
+  load(bytes: Uint8Array, name: string, onProgress: ProgressListener, options?: OpenOptions): Promise<LoadedFile>;
 }
 
 /**

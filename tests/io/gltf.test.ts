@@ -5,9 +5,10 @@ import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { Document, NodeIO, Primitive } from '@gltf-transform/core';
+import fc from 'fast-check';
 import { afterAll, describe, expect, it } from 'vitest';
 import { convert } from '../../src/cli/commands/convert.js';
-import { loadMesh } from '../../src/cli/io.js';
+import { loadMesh, takeReadSettings } from '../../src/cli/io.js';
 import { buildMesh, type HalfedgeMesh, meshStats, ParseError, validate } from '../../src/index.js';
 import { readMeshAsync, writeMeshAsync } from '../../src/core/io/index.js';
 import { weldPositions } from '../../src/core/io/weld.js';
@@ -241,12 +242,84 @@ describe('the command line', () => {
   });
 });
 
+describe('--weld-tolerance', () => {
+  it('is taken from anywhere in the arguments, with its value apart or after =', () => {
+    expect(takeReadSettings(['in.glb', '--weld-tolerance', '0.01', 'out.glb', '--format', 'glb'])).toEqual({
+      settings: { weldTolerance: 0.01 },
+      rest: ['in.glb', 'out.glb', '--format', 'glb'],
+    });
+    expect(takeReadSettings(['--weld-tolerance=1e-6', 'in.stl'])).toEqual({ settings: { weldTolerance: 1e-6 }, rest: ['in.stl'] });
+    expect(takeReadSettings(['in.off'])).toEqual({ settings: {}, rest: ['in.off'] });
+  });
+
+  it('refuses what is not a distance of 0 or more, quoting it', () => {
+    expect(() => takeReadSettings(['--weld-tolerance', '-1'])).toThrow("--weld-tolerance takes a distance of 0 or more, not '-1'");
+    expect(() => takeReadSettings(['--weld-tolerance=abc'])).toThrow("not 'abc'");
+    expect(() => takeReadSettings(['--weld-tolerance=Infinity'])).toThrow("not 'Infinity'");
+    expect(() => takeReadSettings(['in.glb', '--weld-tolerance'])).toThrow('not nothing');
+  });
+
+  it('closes a cube whose sides were written a hair apart', async () => {
+    const document = new Document();
+    addCube(document, 'Box');
+    const position = document.getRoot().listMeshes()[0]!.listPrimitives()[0]!.getAttribute('POSITION')!;
+    // every other side's four corners moved by 1e-5: at equal positions only, the sides come apart
+    const moved = Float32Array.from(position.getArray()! as Float32Array, (x, i) => (Math.floor(i / 12) % 2 ? x + 1e-5 : x));
+    position.setArray(moved);
+    const dir = mkdtempSync(join(tmpdir(), 'halfedge-lab-weld-'));
+    try {
+      writeFileSync(join(dir, 'box.glb'), await glbOf(document));
+      // at equal positions only: a corner with moved and unmoved sides around it (6 of the 8) stays two vertices
+      expect(counts((await loadMesh(join(dir, 'box.glb'))).mesh).V).toBe(14);
+      const { mesh } = await loadMesh(join(dir, 'box.glb'), { weldTolerance: 1e-4 });
+      expect(validate(mesh)).toEqual([]);
+      expect(counts(mesh)).toEqual({ V: 8, E: 18, F: 12, boundaryLoops: 0 });
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
+    }
+  });
+});
+
 describe('welding', () => {
   it('joins exactly equal positions (and -0 with 0), or those within a tolerance', () => {
     expect(Array.from(weldPositions([0, 0, 0, 1, 0, 0, -0, 0, 0, 1, 0, 0]).remap)).toEqual([0, 1, 0, 1]);
     const near = [0, 0, 0, 1e-7, 0, 0, 1, 0, 0];
     expect(Array.from(weldPositions(near).remap)).toEqual([0, 1, 2]);
     expect(Array.from(weldPositions(near, 1e-6).remap)).toEqual([0, 0, 1]);
+  });
+
+  it('within a tolerance, joins each vertex to one within it, and starts a new one only when none is', () => {
+    fc.assert(
+      fc.property(
+        fc.array(fc.tuple(fc.integer({ min: -20, max: 20 }), fc.integer({ min: -20, max: 20 }), fc.integer({ min: -20, max: 20 })), { maxLength: 60 }),
+        fc.constantFrom(0.5, 1, 1.5, 3),
+        (points, tolerance) => {
+          const positions = points.flat().map((x) => x / 4);
+          const { remap, positions: welded } = weldPositions(positions, tolerance);
+          const distance = (i: number, w: number) => Math.hypot(...[0, 1, 2].map((k) => positions[3 * i + k] - welded[3 * w + k]));
+          let made = 0;
+          remap.forEach((w, i) => {
+            expect(distance(i, w)).toBeLessThanOrEqual(tolerance);
+            if (w === made) {
+              // a new vertex: at this point's position, and no earlier vertex was within reach
+              for (let earlier = 0; earlier < made; earlier++) expect(distance(i, earlier)).toBeGreaterThan(tolerance);
+              made++;
+            } else expect(w).toBeLessThan(made);
+          });
+          expect(welded.length).toBe(3 * made);
+        },
+      ),
+      { seed: 19, numRuns: 300 },
+    );
+  });
+
+  it('stays linear on a tolerance far below the coordinates’ precision, and on NaN positions', () => {
+    const count = 100_000;
+    const spread = Float64Array.from({ length: 3 * count }, (_, i) => 1e12 + i);
+    // cells of 1e-300 would all be one: widened, each point keeps its own
+    expect(weldPositions(spread, 1e-300).positions.length).toBe(3 * count);
+    const nan = new Float64Array(3 * count).fill(Number.NaN);
+    expect(weldPositions(nan, 1).positions.length).toBe(3 * count);
   });
 });
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { buildMesh, cube, meshStats, validate } from '../../src/index.js';
+import { buildMesh, cube, meshStats, readMesh, validate } from '../../src/index.js';
 import { attribute, faceLists, parseError, read, text } from './helpers.js';
 
 /** The 12 triangles of the unit cube, corner by corner. */
@@ -33,6 +33,20 @@ function binaryStl(triangles: number[][][], header = 'binary cube'): Uint8Array 
 }
 
 describe('STL', () => {
+  it('welds corners within a tolerance when asked, and only exactly equal ones otherwise', () => {
+    // the cube with every corner of the odd triangles moved by 1e-5: exactly, only the even triangles' corners meet
+    const triangles = cubeTriangles().map((corners, t) => corners.map((c) => c.map((x) => (t % 2 ? x + 1e-5 : x))));
+    const bytes = binaryStl(triangles);
+    const exact = readMesh(bytes);
+    expect(exact.counts.vertices).toBeGreaterThan(8);
+    const near = readMesh(bytes, { weldTolerance: 1e-4 });
+    expect(near.counts).toEqual({ vertices: 8, faces: 12 });
+    expect(near.notes.at(-1)).toMatch(/28 merged, within 0\.0001 of each other/);
+    const { mesh } = buildMesh(near.soup);
+    expect(validate(mesh)).toEqual([]);
+    expect(meshStats(mesh)).toMatchObject({ vertices: 8, edges: 18, faces: 12, boundaryLoops: 0 });
+  });
+
   it('welds the 36 corners of an ascii cube into its 8 vertices, giving a closed mesh', () => {
     const file = read(asciiStl(cubeTriangles()));
     expect(file.format).toBe('stl');

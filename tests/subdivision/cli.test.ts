@@ -40,8 +40,8 @@ describe('subdivide SCHEME IN OUT [--levels N]', () => {
 
   it('runs: load, subdivide, save; exit status 0', async () => {
     vi.mocked(loadMesh).mockResolvedValue({ mesh: meshOf(tetrahedron()) } as Awaited<ReturnType<typeof loadMesh>>);
-    expect(await subdivideCommand.run(['butterfly', 'in.ply', 'out.ply', '--levels', '2'])).toBe(0);
-    expect(loadMesh).toHaveBeenCalledWith('in.ply');
+    expect(await subdivideCommand.run(['butterfly', 'in.ply', 'out.ply', '--levels', '2'], { weldTolerance: 0.5 })).toBe(0);
+    expect(loadMesh).toHaveBeenCalledWith('in.ply', { weldTolerance: 0.5 });
     const [saved, path] = vi.mocked(saveMesh).mock.lastCall as [HalfedgeMesh, string];
     expect([saved.nFaces, path]).toEqual([4 * 16, 'out.ply']);
   });

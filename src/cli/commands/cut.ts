@@ -57,9 +57,9 @@ export function cutForFile(mesh: HalfedgeMesh, { plane, keep, cap }: Pick<CutArg
 export const cutCommand: Command = {
   usage: 'cut IN OUT --plane a,b,c,d [--keep above|below|both] [--no-cap]',
   summary: 'cut with the plane a·x + b·y + c·z + d = 0 (above: > 0), keep a side, cap the cut',
-  async run(args) {
+  async run(args, reading) {
     const options = parseCutArguments(args);
-    const { mesh } = await loadMesh(options.input);
+    const { mesh } = await loadMesh(options.input, reading);
     cutForFile(mesh, options);
     await saveMesh(mesh, options.output);
     return 0;

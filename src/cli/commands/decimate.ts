@@ -50,9 +50,9 @@ export function decimateLoadedMesh(mesh: HalfedgeMesh, options: DecimationOption
 export const decimateCommand: Command = {
   usage: 'decimate IN OUT --faces N [--max-error D]',
   summary: 'collapse edges by quadric error down to N triangles (or until the error passes D)',
-  async run(args) {
+  async run(args, reading) {
     const { input, output, options } = parseDecimateArguments(args);
-    const { mesh } = await loadMesh(input);
+    const { mesh } = await loadMesh(input, reading);
     const reason = decimateLoadedMesh(mesh, options);
     if (reason !== null) {
       console.error(`halfedge-lab: ${reason}`);

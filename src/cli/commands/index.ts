@@ -8,11 +8,13 @@ import { stats } from './stats.js';
 import { subdivideCommand } from './subdivide.js';
 import { validateCommand } from './validate.js';
 
+import type { ReadSettings } from '../io.js';
+
 export interface Command {
   usage: string;
   summary: string;
-  /** Returns the exit status. */
-  run(args: string[]): number | Promise<number>;
+  /** Returns the exit status. `reading`: how to read the input mesh (options every command takes). */
+  run(args: string[], reading?: ReadSettings): number | Promise<number>;
 }
 
 export const commands: Record<string, Command> = {

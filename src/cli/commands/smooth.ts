@@ -67,9 +67,9 @@ export function smoothLoadedMesh(mesh: HalfedgeMesh, options: SmoothingOptions):
 export const smoothCommand: Command = {
   usage: 'smooth IN OUT [--method laplacian|cotan|taubin] [--iterations N] [--lambda X] [--mu X] [--boundary fixed|smooth]',
   summary: 'move each vertex towards its neighbours (default Taubin λ|μ, which keeps the volume)',
-  async run(args) {
+  async run(args, reading) {
     const { input, output, options } = parseSmoothArguments(args);
-    const { mesh } = await loadMesh(input);
+    const { mesh } = await loadMesh(input, reading);
     const reason = smoothLoadedMesh(mesh, options);
     if (reason !== null) {
       console.error(`halfedge-lab: ${reason}`);

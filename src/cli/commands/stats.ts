@@ -41,9 +41,9 @@ function flattenRepair(repair: Repair) {
 export const stats: Command = {
   usage: 'stats FILE [--json]',
   summary: 'counts, topology (χ, genus, boundary loops) and repairs',
-  async run(args) {
+  async run(args, reading) {
     const { values, positionals } = parseOptions(args, { json: { type: 'boolean' } }, 1);
-    const doc = statsDocument(await loadMesh(positionals[0]!));
+    const doc = statsDocument(await loadMesh(positionals[0]!, reading));
     if (values.json) {
       console.log(JSON.stringify(doc, null, 2));
       return 0;

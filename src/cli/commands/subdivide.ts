@@ -36,9 +36,9 @@ export function subdivideLoadedMesh(mesh: HalfedgeMesh, scheme: SubdivisionSchem
 export const subdivideCommand: Command = {
   usage: 'subdivide SCHEME IN OUT [--levels N]',
   summary: `refine by Loop, Catmull-Clark, Butterfly or √3 (SCHEME: ${subdivisionSchemes.join(', ')})`,
-  async run(args) {
+  async run(args, reading) {
     const { scheme, input, output, levels } = parseSubdivideArguments(args);
-    const { mesh } = await loadMesh(input);
+    const { mesh } = await loadMesh(input, reading);
     const reason = subdivideLoadedMesh(mesh, scheme, levels);
     if (reason !== null) {
       console.error(`halfedge-lab: ${reason}`);

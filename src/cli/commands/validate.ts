@@ -5,9 +5,9 @@ import type { Command } from './index.js';
 export const validateCommand: Command = {
   usage: 'validate FILE',
   summary: 'exit 0 if the file is a clean halfedge mesh, 1 listing what had to be repaired',
-  async run(args) {
+  async run(args, reading) {
     const { positionals } = parseOptions(args, {}, 1);
-    const { mesh, report } = await loadMesh(positionals[0]!);
+    const { mesh, report } = await loadMesh(positionals[0]!, reading);
     const problems = validate(mesh);
     for (const repair of report.repairs) {
       console.log(`${repair.kind}: ${repair.message}`);

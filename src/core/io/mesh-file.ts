@@ -14,6 +14,11 @@ export interface ReadOptions {
   fileName?: string;
   /** Called now and then with the fraction of the file read (0…1). */
   onProgress?: (fraction: number) => void;
+  /**
+   * STL and glTF, whose files repeat a vertex per triangle or per seam: weld the vertices within
+   * this distance of each other (default 0: exactly equal positions).
+   */
+  weldTolerance?: number;
 }
 
 export interface MeshFile {

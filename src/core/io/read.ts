@@ -12,7 +12,7 @@ import { readOff } from './off.js';
 import { readPly } from './ply.js';
 import { readStl } from './stl.js';
 
-const readers: Record<Exclude<MeshFormat, 'gltf'>, (bytes: Uint8Array, progress: Progress) => MeshFile> = {
+const readers: Record<Exclude<MeshFormat, 'gltf'>, (bytes: Uint8Array, progress: Progress, weldTolerance?: number) => MeshFile> = {
   ply: readPly,
   off: readOff,
   obj: readObj,
@@ -34,7 +34,7 @@ export function readMesh(data: ArrayBuffer | Uint8Array, options: ReadOptions = 
   const progress = options.onProgress ?? (() => {});
   const format = detectFormat(bytes, options.fileName);
   if (format === 'gltf') throw new ParseError('glTF', {}, 'a glTF file is read with `await readMeshAsync(bytes)`');
-  return readAs(format, bytes, progress);
+  return readAs(format, bytes, progress, options.weldTolerance);
 }
 
 /**
@@ -48,16 +48,16 @@ export async function readMeshAsync(data: ArrayBuffer | Uint8Array, options: Rea
   const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
   const progress = options.onProgress ?? (() => {});
   const format = detectFormat(bytes, options.fileName);
-  if (format !== 'gltf') return readAs(format, bytes, progress);
+  if (format !== 'gltf') return readAs(format, bytes, progress, options.weldTolerance);
   progress(0);
   // glTF-Transform and the decoders load only when a glTF file comes
   const { readGltf } = await import('./gltf.js');
   return checkedFile(await readGltf(bytes, options), progress);
 }
 
-function readAs(format: Exclude<MeshFormat, 'gltf'>, bytes: Uint8Array, progress: Progress): MeshFile {
+function readAs(format: Exclude<MeshFormat, 'gltf'>, bytes: Uint8Array, progress: Progress, weldTolerance?: number): MeshFile {
   progress(0);
-  return checkedFile(readers[format](bytes, progress), progress);
+  return checkedFile(readers[format](bytes, progress, weldTolerance), progress);
 }
 
 function checkedFile(file: MeshFile, progress: Progress): MeshFile {

@@ -44,10 +44,11 @@ function looksLikeAsciiStl(bytes: Uint8Array): boolean {
 }
 
 /**
- * Reads an STL file (ascii or binary) and welds its corners into shared vertices.
+ * Reads an STL file (ascii or binary) and welds its corners into shared vertices: those at equal
+ * positions, or within `weldTolerance` of each other.
  * @throws ParseError with the line (ascii) or byte offset (binary).
  */
-export function readStl(bytes: Uint8Array, progress: Progress): MeshFile {
+export function readStl(bytes: Uint8Array, progress: Progress, weldTolerance = 0): MeshFile {
   const ascii = !isBinaryStl(bytes) && looksLikeAsciiStl(bytes);
   const comments: string[] = [];
   const notes: string[] = [];
@@ -55,13 +56,14 @@ export function readStl(bytes: Uint8Array, progress: Progress): MeshFile {
   const { corners, faceStarts, normals } = triangles;
   const cornerCount = corners.length / 3;
   // STL repeats each position at every corner: welded, the triangles share their vertices
-  const weld = weldPositions(corners);
+  const weld = weldPositions(corners, weldTolerance);
   const indices = weld.remap;
   // the values are float32 in the file, and kept so (the finite check names the type they are stored in)
   const positions = Float32Array.from(weld.positions);
   const vertexCount = positions.length / 3;
   const welded = `${plural(cornerCount, 'STL corner')} into ${plural(vertexCount, 'vertex', 'vertices')}`;
-  notes.push(`welded ${welded} (${cornerCount - vertexCount} merged)`);
+  const how = weldTolerance > 0 ? `, within ${weldTolerance} of each other` : '';
+  notes.push(`welded ${welded} (${cornerCount - vertexCount} merged${how})`);
   const faceCount = faceStarts.length - 1;
   return {
     format: 'stl',

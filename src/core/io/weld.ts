@@ -67,15 +67,26 @@ function weldExact(positions: ArrayLike<number>, count: number): Weld {
 function weldWithin(positions: ArrayLike<number>, count: number, tolerance: number): Weld {
   const remap = new Uint32Array(count);
   const welded = new Float64Array(3 * count);
-  // a grid of cells as wide as the tolerance: a vertex within it lies in one of the 27 cells around
+  // a grid of cells at least as wide as the tolerance: a vertex within it lies in one of the 27
+  // cells around. A tolerance far below the coordinates' precision widens the cells (never the
+  // distance that welds), so that cell numbers stay exact integers rather than one huge cell.
+  let largest = 0;
+  for (let i = 0; i < 3 * count; i++) if (Math.abs(positions[i]) > largest && Number.isFinite(positions[i])) largest = Math.abs(positions[i]);
+  const width = Math.max(tolerance, largest * 2 ** -48);
   const cells = new Map<string, number[]>();
-  const cellOf = (value: number) => Math.floor(value / tolerance);
+  const cellOf = (value: number) => Math.floor(value / width);
   const squared = tolerance * tolerance;
   let next = 0;
   for (let i = 0; i < count; i++) {
     const x = positions[3 * i];
     const y = positions[3 * i + 1];
     const z = positions[3 * i + 2];
+    // NaN or infinity (which the reader refuses afterwards) welds to nothing: no cell collects them all
+    if (!Number.isFinite(x + y + z)) {
+      welded.set([x, y, z], 3 * next);
+      remap[i] = next++;
+      continue;
+    }
     const [cx, cy, cz] = [cellOf(x), cellOf(y), cellOf(z)];
     let match = -1;
     for (let dx = -1; dx <= 1 && match < 0; dx++) {

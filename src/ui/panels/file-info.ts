@@ -13,6 +13,8 @@ export interface FileInfoActions {
   showProblem: (incident: RepairIncident, kind: string, first: Selection) => void;
   toggleSeams: () => void;
   seamsShown: boolean;
+  /** Opens the file again welding within a distance; null when the page does not have the file (a sample, a link). */
+  reopen: ((weldTolerance: number) => void) | null;
 }
 
 export function renderFileInfo(container: HTMLElement, file: FileInfo | null, report: BuildReport | null, actions: FileInfoActions): void {
@@ -37,6 +39,7 @@ export function renderFileInfo(container: HTMLElement, file: FileInfo | null, re
             ? el('button', { type: 'button', 'aria-pressed': String(actions.seamsShown), onclick: actions.toggleSeams }, actions.seamsShown ? 'Hide the seams' : 'Show the seams')
             : null,
         );
+  const weld = file.format === 'stl' || file.format === 'gltf' ? weldControl(file.weldTolerance, actions.reopen) : null;
   const list = (title: string, lines: string[]) =>
     lines.length ? el('details', {}, el('summary', {}, `${title} (${lines.length})`), el('ul', {}, ...lines.map((line) => el('li', {}, line)))) : null;
   const repairs = report?.repairs.length
@@ -72,7 +75,27 @@ export function renderFileInfo(container: HTMLElement, file: FileInfo | null, re
         ),
       )
     : el('p', { class: 'note' }, 'No repairs were needed: the file holds a clean, oriented, manifold mesh.');
-  replace(container, facts, seams, list('Notes', file.notes), list('Comments in the file', file.comments), repairs);
+  replace(container, facts, seams, weld, list('Notes', file.notes), list('Comments in the file', file.comments), repairs);
+}
+
+/**
+ * How near the file's vertices had to be to weld, and for a file of the user's, a distance to open
+ * it again with (a file written in float32, or by a sloppy exporter, has corners a hair apart).
+ */
+function weldControl(tolerance: number, reopen: FileInfoActions['reopen']): HTMLElement {
+  const said = tolerance > 0 ? `Vertices within ${tolerance} of each other were welded.` : 'Vertices at exactly equal positions were welded.';
+  if (!reopen) return el('p', { class: 'note' }, said);
+  const input = el('input', { type: 'number', min: 0, step: 'any', value: tolerance, 'aria-label': 'Weld distance', class: 'weld-distance' });
+  const go = () => reopen(input.value.trim() === '' ? Number.NaN : Number(input.value));
+  input.addEventListener('keydown', (event) => void ((event as KeyboardEvent).key === 'Enter' && go()));
+  return el(
+    'p',
+    { class: 'weld' },
+    `${said} `,
+    el('label', {}, 'Weld within ', input),
+    ' ',
+    el('button', { type: 'button', 'aria-label': 'Open again, welding within this distance', onclick: go }, 'Reopen'),
+  );
 }
 
 /** The element a repair incident is shown at: its last vertex (a copy the repair made), else face or halfedge. */
