@@ -135,9 +135,6 @@ export class App {
   private problemSpec: HighlightSpec | null = null;
   /** The seams of a file with per-corner values, while the File tab shows them (see `toggleSeams`). */
   private seamSpec: HighlightSpec | null = null;
-  get seamsShown(): boolean {
-    return this.seamSpec !== null;
-  }
   /** What the Practice tab marks on the state of a run it shows (the last writes, or the reads so far). */
   private practiceSpec: HighlightSpec | null = null;
   private traversalSpec: HighlightSpec | null = null;
@@ -715,6 +712,10 @@ export class App {
     this.problemSpec = problemHighlight(this.mesh, incident, kind);
     this.say(incident.message);
     this.drawSelection();
+  }
+
+  get seamsShown(): boolean {
+    return this.seamSpec !== null;
   }
 
   /**
