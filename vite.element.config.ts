@@ -6,6 +6,8 @@ import { defineConfig } from 'vite';
  * vite.config.ts; the library's, tsc.
  */
 export default defineConfig({
+  // its workers and chunks are found beside element.js, wherever a site puts it
+  base: './',
   publicDir: false,
   build: {
     target: 'es2022',

@@ -60,8 +60,13 @@ test.describe('two <halfedge-view> elements on one page', () => {
   test('open their own meshes, take the keys only when focused, and walk independently', async ({ page }) => {
     test.skip(!existsSync(join(ELEMENT_DIR, 'element.js')), 'the element is not built (npm run build:element)');
     const errors = await serveCoursePage(page, twoViews);
+    const workers: string[] = [];
+    page.on('worker', (worker) => workers.push(worker.url()));
     await page.goto('/course/index.html');
     await labsReady(page, 'one', 'two');
+    // each view's own workers, from beside element.js (not from the app's site)
+    expect(workers.length).toBeGreaterThanOrEqual(2);
+    for (const url of workers) expect(url).toContain('/course/assets/');
     // each opened its own src and selected its own select, in its own naming
     await expect.poll(async () => (await stateOf(page, 'one')).selection).toBe('h17');
     await expect.poll(async () => (await stateOf(page, 'two')).selection).toBe('h3');
