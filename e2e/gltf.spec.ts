@@ -59,6 +59,12 @@ test.describe('glTF in the app', () => {
     await page.locator('#file-input').setInputFiles({ name: 'packed.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(await glbOf(scene(), 'meshopt')) });
     await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('packed.glb');
     expect(await stats(page)).toMatchObject({ vertices: 122, faces: 236 });
+    // a Draco-compressed one: the decoder's script and WebAssembly load in the worker when needed
+    await page.locator('#file-input').setInputFiles({ name: 'squeezed.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(await glbOf(scene(), 'draco')) });
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('squeezed.glb');
+    expect(await stats(page)).toMatchObject({ vertices: 122, faces: 236, boundaryLoops: 0 });
+    await page.locator('#file-input').setInputFiles({ name: 'packed.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from(await glbOf(scene(), 'meshopt')) });
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('packed.glb');
 
     // out as .glb, and back: the same counts
     await expect(page.locator('#file-info')).toContainText('packed.glb — glTF binary (.glb), 175 vertices and 236 faces in the file');

@@ -150,7 +150,7 @@ export class App {
     this.ready = new Promise((resolve) => (this.markReady = resolve));
     this.client = new SessionClient({
       createSessionWorker: () => new Worker(new URL('../workers/session.worker.ts', import.meta.url), { type: 'module' }),
-      createLoaderWorker: () => new Worker(new URL('../workers/loader.worker.ts', import.meta.url), { type: 'module' }),
+      createLoaderWorker: () => new Worker(new URL('./loader.worker.ts', import.meta.url), { type: 'module' }),
     });
     this.client.onProgress = ({ label, fraction }) => this.showProgress(label, fraction);
     this.client.onRestart = (message, snapshot) => {

@@ -6,13 +6,19 @@ import type { LoadedFile, OpenOptions, ProgressListener } from './protocol.js';
 /** Parsing is most of the work; building the rest. */
 const READ_SHARE = 0.6;
 
+/** How the loader reads: what the page asked (`OpenOptions`), and where the Draco decoder comes from there (see `GltfReadOptions`). */
+export interface LoadOptions extends OpenOptions {
+  dracoDecoder?: () => Promise<unknown>;
+}
+
 /** `options`: the files a `.gltf` names (its buffers), opened together with it; the weld distance. */
-export async function loadFile(bytes: Uint8Array, name: string, onProgress?: ProgressListener, options: OpenOptions = {}): Promise<LoadedFile> {
+export async function loadFile(bytes: Uint8Array, name: string, onProgress?: ProgressListener, options: LoadOptions = {}): Promise<LoadedFile> {
   const weldTolerance = options.weldTolerance ?? 0;
   const file = await readMeshAsync(bytes, {
     fileName: name,
     resources: options.resources,
     weldTolerance,
+    dracoDecoder: options.dracoDecoder,
     onProgress: (fraction) => onProgress?.({ label: `reading ${name}`, fraction: READ_SHARE * fraction }),
   });
   const { mesh, report } = buildMesh(file.soup, {

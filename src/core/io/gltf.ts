@@ -28,6 +28,12 @@ export interface GltfReadOptions {
   resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>;
   /** Weld vertices within this distance of each other (default 0: exactly equal positions). */
   weldTolerance?: number;
+  /**
+   * Makes the Draco decoder module (`createDecoderModule()` of `draco3dgltf`), for a file that
+   * needs it. By default the package is loaded as Node loads it; a page's worker, where it
+   * cannot be, gives its own (the app's loader worker does: `src/ui/draco.ts`).
+   */
+  dracoDecoder?: () => Promise<unknown>;
 }
 
 const FORMAT = 'glTF';
@@ -54,7 +60,7 @@ export async function readGltf(bytes: Uint8Array, options: GltfReadOptions = {})
   if (ignored.length) notes.push(`required extensions ignored (they do not change the geometry): ${ignored.join(', ')}`);
   json.extensionsRequired = (json.extensionsRequired ?? []).filter((name) => geometry.has(name));
   checkData(jsonDocument);
-  await registerDecoders(io, json.extensionsUsed ?? []);
+  await registerDecoders(io, json.extensionsUsed ?? [], options.dracoDecoder ?? nodeDracoDecoder);
   let gltf: Document;
   try {
     gltf = await io.readJSON(jsonDocument);
@@ -210,23 +216,26 @@ function dataUriLength(uri: string): number {
 }
 
 /** Decoders are loaded only for a file that is compressed with them. */
-async function registerDecoders(io: WebIO, used: string[]): Promise<void> {
+async function registerDecoders(io: WebIO, used: string[], dracoDecoder: () => Promise<unknown>): Promise<void> {
   if (used.includes('EXT_meshopt_compression')) {
     const { MeshoptDecoder } = await import('meshoptimizer/decoder');
     await MeshoptDecoder.ready;
     io.registerDependencies({ 'meshopt.decoder': MeshoptDecoder });
   }
-  if (used.includes('KHR_draco_mesh_compression')) {
-    // a name the page's bundler does not follow: the decoder package is for Node, and a page cannot resolve it
-    const name = 'draco3dgltf';
-    let draco: { default?: DracoModule } & DracoModule;
-    try {
-      draco = (await import(/* @vite-ignore */ name)) as typeof draco;
-    } catch {
-      throw new ParseError(FORMAT, {}, 'the file is Draco-compressed, which only the command line decodes for now: `halfedge-lab convert FILE.glb OUT.glb` writes it uncompressed');
-    }
-    io.registerDependencies({ 'draco3d.decoder': await (draco.default ?? draco).createDecoderModule() });
+  if (used.includes('KHR_draco_mesh_compression')) io.registerDependencies({ 'draco3d.decoder': await dracoDecoder() });
+}
+
+/** The Draco decoder as Node loads it, from the `draco3dgltf` package. */
+async function nodeDracoDecoder(): Promise<unknown> {
+  // a name the page's bundler does not follow: the package's script is for Node (a page gives its own, see GltfReadOptions)
+  const name = 'draco3dgltf';
+  let draco: { default?: DracoModule } & DracoModule;
+  try {
+    draco = (await import(/* @vite-ignore */ name)) as typeof draco;
+  } catch {
+    throw new ParseError(FORMAT, {}, 'the file is Draco-compressed, and no Draco decoder could be loaded here: `halfedge-lab convert FILE.glb OUT.glb` writes it uncompressed');
   }
+  return (draco.default ?? draco).createDecoderModule();
 }
 
 interface DracoModule {
