@@ -39,7 +39,7 @@ export function renderFileInfo(container: HTMLElement, file: FileInfo | null, re
             ? el('button', { type: 'button', 'aria-pressed': String(actions.seamsShown), onclick: actions.toggleSeams }, actions.seamsShown ? 'Hide the seams' : 'Show the seams')
             : null,
         );
-  const weld = file.format === 'stl' || file.format === 'gltf' ? weldControl(file.weldTolerance, actions.reopen) : null;
+  const weld = file.format === 'stl' || file.format === 'gltf' ? weldControl(file, actions.reopen) : null;
   const list = (title: string, lines: string[]) =>
     lines.length ? el('details', {}, el('summary', {}, `${title} (${lines.length})`), el('ul', {}, ...lines.map((line) => el('li', {}, line)))) : null;
   const repairs = report?.repairs.length
@@ -82,8 +82,14 @@ export function renderFileInfo(container: HTMLElement, file: FileInfo | null, re
  * How near the file's vertices had to be to weld, and for a file of the user's, a distance to open
  * it again with (a file written in float32, or by a sloppy exporter, has corners a hair apart).
  */
-function weldControl(tolerance: number, reopen: FileInfoActions['reopen']): HTMLElement {
-  const said = tolerance > 0 ? `Vertices within ${tolerance} of each other were welded.` : 'Vertices at exactly equal positions were welded.';
+function weldControl({ notes, weldTolerance: tolerance }: FileInfo, reopen: FileInfoActions['reopen']): HTMLElement {
+  // the reader's own count ("welded 177 glTF vertices into 122 (55 joined …)"), else what was joined
+  const note = notes.find((line) => line.startsWith('welded '));
+  const said = note
+    ? `${note[0].toUpperCase()}${note.slice(1)}.`
+    : tolerance > 0
+      ? `Vertices within ${tolerance} of each other were welded.`
+      : 'Vertices at exactly equal positions were welded.';
   if (!reopen) return el('p', { class: 'note' }, said);
   const input = el('input', { type: 'number', min: 0, step: 'any', value: tolerance, 'aria-label': 'Weld distance', class: 'weld-distance' });
   const go = () => reopen(input.value.trim() === '' ? Number.NaN : Number(input.value));
