@@ -26,6 +26,9 @@ const SPARE = 1024;
 
 export class RenderLayout {
   private faceStart = new Int32Array(0);
+  /** The triangles each face's range holds room for (a face that shrank keeps its range)… */
+  private faceRoom = new Int32Array(0);
+  /** …and the triangles it draws now (more than one: a polygon). */
   private faceCount = new Int32Array(0);
   private trianglesUsed = 0;
   private capacity = { vertices: 0, edges: 0, triangles: 0 };
@@ -56,6 +59,7 @@ export class RenderLayout {
     const triangles = new Uint32Array(3 * triangleRoom);
     const triangleFace = new Int32Array(triangleRoom).fill(-1);
     this.faceStart = new Int32Array(mesh.faceSlots + SPARE);
+    this.faceRoom = new Int32Array(mesh.faceSlots + SPARE);
     this.faceCount = new Int32Array(mesh.faceSlots + SPARE);
     this.trianglesUsed = 0;
     for (let f = 0; f < mesh.faceSlots; f++) {
@@ -74,6 +78,7 @@ export class RenderLayout {
         writeTriangles(corners, f, t, triangles, triangleFace);
         this.faceCount[f] = corners.length / 3;
       }
+      this.faceRoom[f] = this.faceCount[f];
       this.trianglesUsed += this.faceCount[f];
     }
     this.capacity = { vertices: vertexRoom, edges: edgeRoom, triangles: triangleRoom };
@@ -117,17 +122,18 @@ export class RenderLayout {
       const corners = f < mesh.faceSlots && !mesh.fDeleted[f] ? faceTriangles(mesh, f) : new Uint32Array(0);
       const count = corners.length / 3;
       this.polygons += (count > 1 ? 1 : 0) - (wasPolygon ? 1 : 0);
+      this.faceCount[f] = count;
       let start = this.faceStart[f];
-      if (count > this.faceCount[f]) {
+      if (count > this.faceRoom[f]) {
         // the old range is too small: blank it and move the face to the end
-        if (this.faceCount[f] > 0) writes.push(...blank(start, this.faceCount[f]));
+        if (this.faceRoom[f] > 0) writes.push(...blank(start, this.faceRoom[f]));
         if (this.trianglesUsed + count > this.capacity.triangles) return null;
         start = this.faceStart[f] = this.trianglesUsed;
         this.trianglesUsed += count;
-        this.faceCount[f] = count;
+        this.faceRoom[f] = count;
       }
-      const data = new Uint32Array(3 * this.faceCount[f]);
-      const faces = new Int32Array(this.faceCount[f]).fill(-1);
+      const data = new Uint32Array(3 * this.faceRoom[f]);
+      const faces = new Int32Array(this.faceRoom[f]).fill(-1);
       writeTriangles(corners, f, 0, data, faces);
       if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
     }

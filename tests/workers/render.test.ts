@@ -1,0 +1,55 @@
+/**
+ * The render layout patched change by change draws what a fresh layout of the mesh draws, also
+ * after a face shrank and grew back many times (its range stays, its polygon count must not drift).
+ */
+import { describe, expect, it } from 'vitest';
+import { applyChange, buildMesh, type ChangeRecord, grid, invertChange, noChange, triangulateFace } from '../../src/index.js';
+import type { RenderBuffers } from '../../src/workers/protocol.js';
+import { RenderLayout } from '../../src/workers/render.js';
+
+/** The triangles the buffers draw, each as its sorted corners and its face. */
+function drawnTriangles(render: RenderBuffers): string[] {
+  const triangles: string[] = [];
+  for (let t = 0; t < render.counts.triangles; t++) {
+    if (render.triangleFace[t] === -1) continue;
+    const corners = Array.from(render.triangles.subarray(3 * t, 3 * t + 3)).sort((a, b) => a - b);
+    triangles.push(`${corners.join(' ')} f${render.triangleFace[t]}`);
+  }
+  return triangles.sort();
+}
+
+describe('the render layout, patched', () => {
+  it('redraws a quad made non-convex after another face was triangulated and put back ten times', () => {
+    const { mesh } = buildMesh(grid(3, 3, true));
+    const layout = new RenderLayout();
+    const render = layout.full(mesh);
+    const patch = (change: ChangeRecord) => {
+      const result = layout.patch(mesh, change);
+      expect(result).not.toBeNull();
+      for (const { buffer, offset, data } of result!.writes) (render[buffer] as Uint32Array | Int32Array | Float32Array).set(data, offset);
+      render.counts = result!.counts;
+    };
+    const { record } = triangulateFace(mesh, 0);
+    patch(record!);
+    for (let i = 0; i < 10; i++) {
+      applyChange(mesh, record!, 'backward');
+      patch(invertChange(record!));
+      applyChange(mesh, record!, 'forward');
+      patch(record!);
+    }
+    // corner 1 of the middle quad pushed past the diagonal 0–2: a fan from corner 0 would now cross outside
+    const f = 4;
+    const loop = [0, 1, 2, 3].map((k) => {
+      let h = mesh.fHalfedge[f];
+      for (let i = 0; i < k; i++) h = mesh.heNext[h];
+      return mesh.heVertex[h];
+    });
+    const [p0, p1, p2, p3] = loop.map((v) => mesh.position(v));
+    const middle = [0, 1, 2].map((k) => (p0[k] + p2[k]) / 2);
+    const moved = [0, 1, 2].map((k) => middle[k] + 0.3 * (p3[k] - middle[k]));
+    mesh.positions.set(moved, 3 * loop[1]);
+    const position = { kind: 'vertex' as const, name: 'position', itemSize: 3, index: Int32Array.of(loop[1]), start: 0, old: Float64Array.from(p1), new: Float64Array.from(moved) };
+    patch({ ...noChange(mesh), values: [position] });
+    expect(drawnTriangles(render)).toEqual(drawnTriangles(new RenderLayout().full(mesh)));
+  });
+});
