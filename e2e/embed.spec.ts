@@ -8,7 +8,7 @@ import { extname, join, normalize } from 'node:path';
 import { expect, type Page, test } from '@playwright/test';
 import type { HalfedgeViewElement } from '../src/ui/element.js';
 
-/** The element as `npm run build:element` leaves it (the test server's command builds it first). */
+/** The element as `npm run build:element` leaves it (the test server's command builds it first, so it is always there). */
 const ELEMENT_DIR = 'dist/element';
 
 const types: Record<string, string> = { '.js': 'text/javascript', '.html': 'text/html' };
@@ -58,7 +58,6 @@ function stateOf(page: Page, id: string) {
 
 test.describe('two <halfedge-view> elements on one page', () => {
   test('open their own meshes, take the keys only when focused, and walk independently', async ({ page }) => {
-    test.skip(!existsSync(join(ELEMENT_DIR, 'element.js')), 'the element is not built (npm run build:element)');
     const errors = await serveCoursePage(page, twoViews);
     const workers: string[] = [];
     page.on('worker', (worker) => workers.push(worker.url()));
@@ -131,7 +130,6 @@ test.describe('two <halfedge-view> elements on one page', () => {
   });
 
   test('a src that is not there is said on the view, and the page lives on', async ({ page }) => {
-    test.skip(!existsSync(join(ELEMENT_DIR, 'element.js')), 'the element is not built (npm run build:element)');
     await serveCoursePage(page, twoViews.replace('/models/cube.off', '/models/no-such-mesh.off'));
     await page.goto('/course/index.html');
     await labsReady(page, 'one');
