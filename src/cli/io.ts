@@ -66,7 +66,7 @@ export async function loadMesh(path: string, settings: ReadSettings = {}): Promi
   }
 }
 
-function readBytes(path: string): Uint8Array<ArrayBuffer> {
+export function readBytes(path: string): Uint8Array<ArrayBuffer> {
   try {
     return readFileSync(path) as Uint8Array<ArrayBuffer>;
   } catch (error) {

@@ -303,12 +303,16 @@ export class App {
       this.say(`The weld distance must be a number of 0 or more, not ${weldTolerance}.`, 'alert');
       return false;
     }
-    const files = this.userFiles;
-    if (!files?.some((f) => f.name === this.snapshot?.file?.name)) {
+    if (!this.userFiles || !this.reopenable) {
       this.say('Only a file opened from this computer can be opened again; open it once more.', 'alert');
       return false;
     }
-    return this.openFiles(files, weldTolerance);
+    return this.openFiles(this.userFiles, weldTolerance);
+  }
+
+  /** Whether the mesh on screen came from files the page still has (see `reopen`). */
+  private get reopenable(): boolean {
+    return this.userFiles?.some((f) => f.name === this.snapshot?.file?.name) ?? false;
   }
 
   /**
@@ -852,8 +856,8 @@ export class App {
       renderFileInfo(this.byId('file-info'), snapshot.file, snapshot.report, {
         showProblem: (incident, kind, first) => this.showProblem(incident, kind, first),
         toggleSeams: () => void this.toggleSeams(),
-        reopen: this.userFiles?.some((f) => f.name === snapshot.file?.name) ? (tolerance: number) => void this.reopen(tolerance) : null,
-        seamsShown: this.seamSpec !== null,
+        reopen: this.reopenable ? (tolerance: number) => void this.reopen(tolerance) : null,
+        seamsShown: this.seamsShown,
       });
     }
   }

@@ -11,7 +11,7 @@ import { describeWrite, type PracticeWrite } from '../core/practice/writes.js';
 import { colors, hollowRoles } from './colors.js';
 import { labelPoint } from './highlights.js';
 import { emptyHighlight, type HighlightSpec } from './scene/highlight.js';
-import { elementName, type Selection } from './selection.js';
+import { elementName, exists, type Selection } from './selection.js';
 
 /** Writes given a label: more would cover the mesh (the rest are still drawn, unlabelled). */
 const LABELLED_WRITES = 4;
@@ -29,7 +29,7 @@ const targetColour: Record<string, string> = {
 /** `writes` (the last ones before the state shown, in order) marked on `mesh`; elements `mesh` lacks are skipped. */
 export function writeMarks(mesh: HalfedgeMesh, writes: readonly PracticeWrite[]): HighlightSpec {
   const spec = emptyHighlight();
-  const alive = aliveIn(mesh);
+  const alive = (selection: Selection) => exists(mesh, selection);
   const mark = (s: Selection, color: string, label: string | null, hollow = false) => {
     if (!alive(s)) return;
     if (s.kind === 'halfedge') spec.halfedges.push({ id: s.id, color, hollow });
@@ -51,7 +51,7 @@ export function writeMarks(mesh: HalfedgeMesh, writes: readonly PracticeWrite[])
 /** The halfedges a query read up to read `step` (a zero-based index into `visits`): the current one labelled. */
 export function readMarks(mesh: HalfedgeMesh, visits: readonly number[], step: number): HighlightSpec {
   const spec = emptyHighlight();
-  const alive = aliveIn(mesh);
+  const alive = (selection: Selection) => exists(mesh, selection);
   const seen = new Set<number>();
   for (let i = 0; i < step; i++) {
     const h = visits[i];
@@ -102,14 +102,4 @@ function pointedTo(write: PracticeWrite): Selection | null {
     default:
       return null;
   }
-}
-
-/** Whether an element is live in `mesh` (a drawable state: every live element can be drawn). */
-function aliveIn(mesh: HalfedgeMesh): (s: Selection) => boolean {
-  return ({ kind, id }) => {
-    if (kind === 'halfedge') return id >= 0 && id < mesh.halfedgeSlots && mesh.eDeleted[id >> 1] === 0;
-    if (kind === 'edge') return id >= 0 && id < mesh.edgeSlots && mesh.eDeleted[id] === 0;
-    if (kind === 'vertex') return id >= 0 && id < mesh.vertexSlots && mesh.vDeleted[id] === 0;
-    return id >= 0 && id < mesh.faceSlots && mesh.fDeleted[id] === 0;
-  };
 }

@@ -1,11 +1,10 @@
-import { readFileSync } from 'node:fs';
 import { dirname, extname, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { Worker } from 'node:worker_threads';
 import { InvalidInputError } from '../../core/errors.js';
 import { type Exercise, findExercise, exercises, type GradeReport, gradeSolution, parseExercise, SolutionError } from '../../core/practice/index.js';
 import { type SandboxPort, sandboxRunner } from '../../workers/practice-runner.js';
-import { parseOptions, UsageError } from '../io.js';
+import { parseOptions, readBytes, UsageError } from '../io.js';
 import type { Command } from './index.js';
 
 /** Memory a solution's worker thread may use before it is stopped. */
@@ -78,14 +77,6 @@ function loadExercise(arg: string): { exercise: Exercise; files: Map<string, Uin
   } catch (error) {
     if (error instanceof InvalidInputError) throw new UsageError(`${arg}: ${error.message}`);
     throw error;
-  }
-}
-
-function readBytes(path: string): Uint8Array {
-  try {
-    return readFileSync(path);
-  } catch (error) {
-    throw new UsageError(`cannot read ${path}: ${(error as NodeJS.ErrnoException).code ?? (error as Error).message}`);
   }
 }
 

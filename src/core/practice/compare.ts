@@ -5,6 +5,7 @@
  * list of matched vertices, and every edge as the pair it joins. The first difference is said in
  * the student's ids.
  */
+import { boundingBox } from '../geometry.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import type { AnswerKind } from './exercise.js';
 
@@ -16,7 +17,7 @@ export function compareMeshes(yours: HalfedgeMesh, reference: HalfedgeMesh): str
   if (v !== rv || e !== re || f !== rf) {
     return `your mesh has ${v} vertices, ${e} edges and ${f} faces; the library's has ${rv}, ${re} and ${rf}`;
   }
-  const tolerance = 1e-6 * Math.max(1e-12, diagonal(reference));
+  const tolerance = sameSpotTolerance(reference);
   const match = new Map<number, number>(); // your vertex → reference vertex
   const taken = new Set<number>();
   for (const v of yours.vertices()) {
@@ -72,7 +73,7 @@ export function compareAnswers(kind: AnswerKind, yours: unknown, reference: unkn
       if (typeof yours !== 'number' || !Number.isInteger(yours) || yours < 0 || yours >= yourMesh.vertexSlots || yourMesh.isVertexDeleted(yours)) {
         return `your code returned ${show(yours)}, which is not a vertex of your mesh; the library's answer is v${String(reference)}`;
       }
-      const tolerance = 1e-6 * Math.max(1e-12, diagonal(referenceMesh));
+      const tolerance = sameSpotTolerance(referenceMesh);
       const [p, q] = [yourMesh.position(yours), referenceMesh.position(reference as number)];
       return distance(p, q) <= tolerance ? null : `your code returned v${yours} at ${formatPoint(p)}; the library's vertex is at ${formatPoint(q)}`;
     }
@@ -144,17 +145,11 @@ function distance(p: number[], q: number[]): number {
   return Math.hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
 }
 
-function diagonal(mesh: HalfedgeMesh): number {
-  const min = [Infinity, Infinity, Infinity];
-  const max = [-Infinity, -Infinity, -Infinity];
-  for (const v of mesh.vertices()) {
-    const p = mesh.position(v);
-    for (let k = 0; k < 3; k++) {
-      min[k] = Math.min(min[k], p[k]);
-      max[k] = Math.max(max[k], p[k]);
-    }
-  }
-  return min[0] === Infinity ? 0 : Math.hypot(max[0] - min[0], max[1] - min[1], max[2] - min[2]);
+/** How near two positions must be to be the same vertex: a millionth of the mesh's size. */
+function sameSpotTolerance(mesh: HalfedgeMesh): number {
+  const box = boundingBox(mesh);
+  const diagonal = box ? Math.hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]) : 0;
+  return 1e-6 * Math.max(1e-12, diagonal);
 }
 
 function formatPoint(p: number[]): string {

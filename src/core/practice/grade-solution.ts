@@ -7,7 +7,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import { type Exercise, fixtureMesh } from './exercise.js';
 import { type Check, type FixtureResult, gradeFixture } from './grade.js';
 import type { RunOutput } from './run.js';
-import { applyWrite } from './writes.js';
+import { replayWrites } from './writes.js';
 
 export interface FixtureRun {
   mesh: HalfedgeMesh;
@@ -53,8 +53,6 @@ async function referenceResults(exercise: Exercise, runs: FixtureRun[], run: Sol
   const outputs = await run(reference, runs);
   return outputs.map((output, i) => {
     if (output.error) throw new Error(`the exercise's reference fails on fixture "${exercise.fixtures[i].name}": ${output.error.message}`);
-    const copy = runs[i].mesh.clone();
-    for (const write of output.writes) applyWrite(copy, write);
-    return { value: output.value, mesh: copy };
+    return { value: output.value, mesh: replayWrites(runs[i].mesh.clone(), output.writes) };
   });
 }

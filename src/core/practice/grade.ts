@@ -15,7 +15,7 @@ import { validate, type Violation } from '../validate.js';
 import { compareAnswers, compareMeshes } from './compare.js';
 import type { Exercise, Fixture } from './exercise.js';
 import type { RunOutput } from './run.js';
-import { applyWrite, describeWrite, type PracticeWrite } from './writes.js';
+import { applyWrite, describeWrite, type PracticeWrite, replayWrites } from './writes.js';
 
 export interface Check {
   /** "fixture name: what is checked". */
@@ -61,8 +61,7 @@ export function gradeFixture(
   output: RunOutput,
   reference: { value: unknown; mesh: HalfedgeMesh },
 ): FixtureResult {
-  const after = before.clone();
-  for (const write of output.writes) applyWrite(after, write);
+  const after = replayWrites(before.clone(), output.writes);
   const checks: Check[] = [];
   const check = (what: string, message: string | null) => checks.push({ name: `${fixture.name}: ${what}`, passed: message === null, message: message ?? 'passed' });
   const failure = output.error ? describeError(output) : null;

@@ -13,7 +13,7 @@ import { type GradeReport, gradeSolution } from '../../core/practice/grade-solut
 import { whyNotDrawable } from '../../core/practice/drawable.js';
 import { MAX_VISITS, PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
 import { SolutionError } from '../../core/practice/solution-error.js';
-import { applyWrite, describeWrite, pointerChangeOf, type PracticeWrite } from '../../core/practice/writes.js';
+import { applyWrite, describeWrite, pointerChangeOf, type PracticeWrite, replayWrites } from '../../core/practice/writes.js';
 import { el, replace, replaceKeepingFocus } from '../dom.js';
 import { fixtureFiles } from '../practice-link.js';
 import { readMarks, writeMarks } from '../practice-marks.js';
@@ -231,22 +231,19 @@ export class PracticePanel {
     const write = Math.max(0, Math.min(count, result.writes.length));
     // replay up to the state asked for, remembering the last one that can be drawn
     const mesh = result.before.clone();
-    let drawn = whyNotDrawable(mesh) ? -1 : 0;
+    let why = whyNotDrawable(mesh);
+    let drawn = why ? -1 : 0;
     for (let i = 0; i < write; i++) {
       applyWrite(mesh, result.writes[i]);
-      if (!whyNotDrawable(mesh)) drawn = i + 1;
+      why = whyNotDrawable(mesh);
+      if (!why) drawn = i + 1;
     }
-    const why = whyNotDrawable(mesh);
     const frame = this.shown?.fixture !== fixture || this.framed !== result;
     this.framed = result;
     // the marks say what this state is about; a selection made on another state would crowd them
     this.actions.select(null);
     this.shown = { fixture, write, drawn: Math.max(0, drawn), why };
-    let state = mesh;
-    if (drawn !== write) {
-      state = result.before.clone();
-      for (let i = 0; i < drawn; i++) applyWrite(state, result.writes[i]);
-    }
+    const state = drawn === write ? mesh : replayWrites(result.before.clone(), result.writes, Math.max(0, drawn));
     // the write that led here, or every write since the last state that can be drawn, marked on it
     const marked = result.writes.slice(drawn === write ? Math.max(0, write - 1) : Math.max(0, drawn), write);
     const from = Math.max(0, drawn) + 1;
