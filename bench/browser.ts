@@ -59,7 +59,7 @@ try {
 
   const assets = join(root, 'site/assets');
   const scripts = readdirSync(assets).filter((name) => name.endsWith('.js'));
-  const gzipped = (names: string[]) => Math.round(names.reduce((sum, name) => sum + gzipSync(readFileSync(join(assets, name)), { level: 9 }).length, 0) / 1024);
+  const gzipped = (names: string[]) => gzippedKB(assets, names);
   const loadedFirst = scripts.filter((name) => fetched.has(name));
   const practice = scripts.filter((name) => name.startsWith('practice'));
   const gltf = scripts.filter((name) => /^(gltf|decoder|meshopt|draco)/.test(name));
@@ -186,10 +186,15 @@ async function measureElement(): Promise<void> {
     await lab.ready;
     return lab.state().drawnAt;
   });
-  const kB = Math.round(fetched.reduce((sum, path) => sum + gzipSync(readFileSync(join(elementDir, path)), { level: 9 }).length, 0) / 1024);
+  const kB = gzippedKB(elementDir, fetched);
   report({ case: 'element-js-gzip', size: fetched.length, ms: null, kB });
   report({ case: 'element-first-load-to-drawn', size: 0, ms: Math.round(drawnAt) });
   await page.close();
+}
+
+/** The files' size together, gzipped as a server would (level 9), in kB. */
+function gzippedKB(folder: string, names: string[]): number {
+  return Math.round(names.reduce((sum, name) => sum + gzipSync(readFileSync(join(folder, name)), { level: 9 }).length, 0) / 1024);
 }
 
 async function waitForServer(url: string): Promise<void> {

@@ -5,6 +5,7 @@ import { parseArgs } from 'node:util';
 import {
   buildMesh,
   type BuildResult,
+  gltfBufferUris,
   type HalfedgeMesh,
   InvalidInputError,
   meshToHalfedgeJSON,
@@ -77,17 +78,9 @@ export function readBytes(path: string): Uint8Array<ArrayBuffer> {
 /** The buffers a `.gltf` names, read from beside it (a `.glb` or any other file needs none). */
 function gltfResources(path: string, bytes: Uint8Array): Map<string, Uint8Array<ArrayBuffer>> | undefined {
   if (!path.toLowerCase().endsWith('.gltf')) return undefined;
-  let uris: unknown[] = [];
-  try {
-    const json = JSON.parse(new TextDecoder().decode(bytes)) as { buffers?: { uri?: unknown }[] };
-    uris = (json.buffers ?? []).map((buffer) => buffer.uri);
-  } catch {
-    return undefined; // the reader says what is wrong with the JSON
-  }
   const resources = new Map<string, Uint8Array<ArrayBuffer>>();
-  for (const uri of uris) {
+  for (const uri of gltfBufferUris(bytes)) {
     // only files beside the .gltf or below it: a buffer cannot name /etc/passwd or ../../secret
-    if (typeof uri !== 'string' || uri.startsWith('data:')) continue;
     let name: string;
     try {
       name = decodeURIComponent(uri);

@@ -5,6 +5,7 @@
  * of `window.halfedgeLab`, scoped to that view, and it takes the keys while it has the focus.
  * See docs/embed.md.
  */
+import { gltfBufferUris } from '../core/io/index.js';
 import { App } from './app.js';
 import { automation, type HalfedgeLabAutomation } from './automation.js';
 import { parsePanels, unknownPanelsMessage } from './embed.js';
@@ -33,8 +34,10 @@ export class HalfedgeViewElement extends HTMLElement {
     if (this.#app) return; // moved within the page: the view goes on
     if (!this.hasAttribute('tabindex')) this.tabIndex = 0; // focusable, to take the keys
     const shadow = this.shadowRoot ?? this.attachShadow({ mode: 'open' });
-    sheet ??= new CSSStyleSheet();
-    if (sheet.cssRules.length === 0) sheet.replaceSync(styles);
+    if (!sheet) {
+      sheet = new CSSStyleSheet();
+      sheet.replaceSync(styles);
+    }
     shadow.adoptedStyleSheets = [sheet];
     const frame = document.createElement('div');
     frame.className = 'frame';
@@ -110,16 +113,7 @@ async function fetchBytes(url: URL): Promise<Uint8Array<ArrayBuffer>> {
 
 /** The external buffers a `.gltf` names, fetched from beside it, by the names it gives them. */
 async function gltfBuffers(bytes: Uint8Array, url: URL): Promise<Map<string, Uint8Array<ArrayBuffer>>> {
-  let json: { buffers?: { uri?: unknown }[] };
-  try {
-    json = JSON.parse(new TextDecoder().decode(bytes));
-  } catch {
-    return new Map(); // not JSON: the reader says where it breaks
-  }
-  const names = (Array.isArray(json.buffers) ? json.buffers : [])
-    .map((buffer) => buffer?.uri)
-    .filter((uri): uri is string => typeof uri === 'string' && !uri.startsWith('data:'));
-  return new Map(await Promise.all(names.map(async (uri) => [uri, await fetchBytes(new URL(uri, url))] as const)));
+  return new Map(await Promise.all(gltfBufferUris(bytes).map(async (uri) => [uri, await fetchBytes(new URL(uri, url))] as const)));
 }
 
 if (!customElements.get('halfedge-view')) customElements.define('halfedge-view', HalfedgeViewElement);

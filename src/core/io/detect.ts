@@ -50,11 +50,16 @@ export function formatFromFileName(name: string): MeshFormat | undefined {
 }
 
 /** The magic number that starts a GLB: "glTF" in ASCII, read as a little-endian uint32. */
-export const GLB_MAGIC = 0x46546c67;
+const GLB_MAGIC = 0x46546c67;
+
+/** Whether the bytes are a binary glTF (a GLB): its magic number. */
+export function isGlb(bytes: Uint8Array): boolean {
+  return bytes.length >= 4 && new DataView(bytes.buffer, bytes.byteOffset, 4).getUint32(0, true) === GLB_MAGIC;
+}
 
 /** A GLB (its magic), or glTF JSON (an object with an `asset` near its start). */
 function isGltf(bytes: Uint8Array): boolean {
-  if (bytes.length >= 4 && new DataView(bytes.buffer, bytes.byteOffset, 4).getUint32(0, true) === GLB_MAGIC) return true;
+  if (isGlb(bytes)) return true;
   const head = decodeText(bytes.subarray(0, 4096), 0, 4096).trimStart();
   return head.startsWith('{') && /"asset"\s*:/.test(head);
 }

@@ -14,20 +14,18 @@
 import { Document, type JSONDocument, type Logger, Primitive, WebIO } from '@gltf-transform/core';
 import { EXTMeshoptCompression, KHRDracoMeshCompression, KHRMeshQuantization } from '@gltf-transform/extensions';
 import { ParseError } from '../errors.js';
+import { faceHalfedges } from '../circulators.js';
 import { faceCornerTriangles } from '../face-triangles.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import type { SoupAttribute } from '../soup.js';
-import { GLB_MAGIC } from './detect.js';
-import type { MeshFile } from './mesh-file.js';
+import { isGlb } from './detect.js';
+import type { MeshFile, ReadOptions } from './mesh-file.js';
 import { decodeText } from './text.js';
 import { weldPositions } from './weld.js';
 
-export interface GltfReadOptions {
-  fileName?: string;
+export interface GltfReadOptions extends Pick<ReadOptions, 'fileName' | 'weldTolerance'> {
   /** The files a `.gltf` refers to (its `.bin` buffers), by name. */
   resources?: ReadonlyMap<string, Uint8Array<ArrayBuffer>>;
-  /** Weld vertices within this distance of each other (default 0: exactly equal positions). */
-  weldTolerance?: number;
   /**
    * Makes the Draco decoder module (`createDecoderModule()` of `draco3dgltf`), for a file that
    * needs it. By default the package is loaded as Node loads it; a page's worker, where it
@@ -47,7 +45,7 @@ const GEOMETRY_EXTENSIONS = [KHRDracoMeshCompression, EXTMeshoptCompression, KHR
  */
 export async function readGltf(bytes: Uint8Array, options: GltfReadOptions = {}): Promise<MeshFile> {
   const notes: string[] = [];
-  const binary = bytes.length >= 4 && new DataView(bytes.buffer, bytes.byteOffset, 4).getUint32(0, true) === GLB_MAGIC;
+  const binary = isGlb(bytes);
   const io = new WebIO().setLogger(noteLogger(notes)).setStrictResources(false).registerExtensions(GEOMETRY_EXTENSIONS);
   const jsonDocument = binary ? await glbJson(io, bytes) : gltfJson(bytes, options.resources ?? new Map());
   const json = jsonDocument.json;
@@ -107,17 +105,19 @@ function gltfJson(bytes: Uint8Array, files: ReadonlyMap<string, Uint8Array<Array
   checkShape(json);
   const resources: JSONDocument['resources'] = {};
   const byName = new Map([...files].map(([name, data]) => [baseName(name), data]));
+  // by the name as written, or by its file name (what a picked or dropped file is called)
+  const find = (uri: string) => files.get(uri) ?? byName.get(baseName(safeDecode(uri)));
   (json.buffers ?? []).forEach((buffer, i) => {
     const uri = buffer.uri;
     if (uri === undefined || uri.startsWith('data:')) return;
-    const data = files.get(uri) ?? byName.get(baseName(safeDecode(uri)));
+    const data = find(uri);
     if (!data) throw new ParseError(FORMAT, {}, `buffer ${i} is the file '${uri}', which was not given: open it together with the .gltf`);
     resources[uri] = data;
   });
   // images are not needed for the geometry: unresolved ones are dropped (strict resources off)
   for (const image of json.images ?? []) {
     if (image.uri && !image.uri.startsWith('data:')) {
-      const data = files.get(image.uri) ?? byName.get(baseName(safeDecode(image.uri)));
+      const data = find(image.uri);
       if (data) resources[image.uri] = data;
     }
   }
@@ -385,7 +385,7 @@ function transformNormal(c: number[], [x, y, z]: number[]): number[] {
  * coordinates (halfedge attributes `normal` and `texcoord`), as glTF needs.
  */
 export async function writeGlb(mesh: HalfedgeMesh): Promise<Uint8Array> {
-  const { heNext, heVertex, fHalfedge, positions } = mesh;
+  const { heVertex, positions } = mesh;
   const texcoord = mesh.halfedgeAttributes.get('texcoord');
   const normal = mesh.halfedgeAttributes.get('normal');
   const vertexOf = new Map<string, number>();
@@ -409,14 +409,8 @@ export async function writeGlb(mesh: HalfedgeMesh): Promise<Uint8Array> {
     return out;
   };
   for (const f of mesh.faces()) {
-    const loop: number[] = [];
-    const start = fHalfedge[f];
-    let h = start;
-    do {
-      loop.push(h);
-      h = heNext[h];
-    } while (h !== start && loop.length <= mesh.halfedgeSlots);
-    for (const corner of faceCornerTriangles(mesh, f)) indices.push(cornerVertex(loop[corner]));
+    const loop = [...faceHalfedges(mesh, f)];
+    for (const corner of faceCornerTriangles(mesh, f, loop.map((h) => heVertex[h]))) indices.push(cornerVertex(loop[corner]));
   }
   // a vertex no face uses is written too (no triangle names it), so reading back keeps it
   const used = new Uint8Array(mesh.vertexSlots);
@@ -436,7 +430,6 @@ export async function writeGlb(mesh: HalfedgeMesh): Promise<Uint8Array> {
   if (texcoord) primitive.setAttribute('TEXCOORD_0', gltf.createAccessor().setType('VEC2').setArray(Float32Array.from(outTexcoords)).setBuffer(buffer));
   if (normal) primitive.setAttribute('NORMAL', gltf.createAccessor().setType('VEC3').setArray(Float32Array.from(outNormals)).setBuffer(buffer));
   const node = gltf.createNode('mesh').setMesh(gltf.createMesh('mesh').addPrimitive(primitive));
-  gltf.createScene('scene').addChild(node);
-  gltf.getRoot().setDefaultScene(gltf.getRoot().listScenes()[0]);
+  gltf.getRoot().setDefaultScene(gltf.createScene('scene').addChild(node));
   return new WebIO().writeBinary(gltf);
 }

@@ -17,6 +17,7 @@ export { detectFormat, formatFromFileName } from './detect.js';
 export * from './halfedge-json.js';
 export type { Encoding, MeshFile, MeshFormat, ReadOptions } from './mesh-file.js';
 export type { GltfReadOptions } from './gltf.js';
+export { gltfBufferUris } from './gltf-buffers.js';
 export { readMesh, readMeshAsync } from './read.js';
 export { weldPositions } from './weld.js';
 export { meshToSoup, type WriteFormat, writeFormatFromFileName, writeMesh, writeMeshAsync, writeSoup } from './write.js';
