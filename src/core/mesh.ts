@@ -344,6 +344,8 @@ export class HalfedgeMesh {
 
   /** Makes room for this many slots of each kind, growing by half again when it must grow (so growth is rare). */
   makeRoom(capacity: MeshCapacity): void {
+    // the common case, on every element added: everything fits already
+    if (capacity.vertices <= this.vHalfedge.length && capacity.edges <= this.eDeleted.length && capacity.faces <= this.fHalfedge.length) return;
     const room = (wanted: number, now: number) => (wanted <= now ? 0 : Math.max(wanted, nextCapacity(now)));
     this.reserve({
       vertices: room(capacity.vertices, this.vHalfedge.length),
