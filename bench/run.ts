@@ -1,5 +1,7 @@
 /**
  * `npm run bench [-- --json] [--only NAME] [--sizes 10000,100000,1000000]`
+ * `npm run bench -- --native [--json] [--rounds 3] [--only OP] [--small]`: beside CGAL and
+ * OpenMesh, see `native.ts`.
  *
  * Prints one row per case (or, with --json, one JSON object per line): our time, the peer's time
  * in the same run, their ratio, and the peak memory of each. Every side of every case runs in a
@@ -9,6 +11,7 @@ import { execFileSync } from 'node:child_process';
 import { type BenchCase, type BenchResult, combine, measure, type SideResult } from './harness.js';
 import { buildCases } from './cases/build.js';
 import { cutCases } from './cases/cut.js';
+import { runNativeComparison } from './native.js';
 import { parseCases } from './cases/parse.js';
 import { smoothDecimateCases } from './cases/smooth-decimate.js';
 import { subdivisionCases } from './cases/subdivision.js';
@@ -22,7 +25,9 @@ const valueOf = (flag: string) => {
 };
 
 const childAt = args.indexOf('--child');
-if (childAt >= 0) {
+if (args.includes('--native')) {
+  await runNativeComparison(args);
+} else if (childAt >= 0) {
   // one side of one case, in this process: print what it measured
   const [name, size, side] = args.slice(childAt + 1);
   const bench = caseGroups.flatMap((group) => group([Number(size)])).find((c) => c.case === name)!;
