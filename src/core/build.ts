@@ -619,49 +619,56 @@ function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, tick: Tick = () =>
   const { heNext, hePrev, heVertex, heFace } = mesh;
   const nH = mesh.halfedgeSlots;
   mesh.vHalfedge.fill(-1);
+  // a copy added for a pinched vertex may reallocate the vertex arrays: never keep them across one
+  let vHalfedge = mesh.vHalfedge;
   const visited = new Uint8Array(nH);
   const copies = new Map<number, number[]>();
   for (let h = 0; h < nH; h++) {
     if ((h & TICK) === 0) tick(h, nH);
     if (heFace[h] === -1 || visited[h]) continue;
     const v = heVertex[h];
-    // rotate counter-clockwise (twin of prev) to the first halfedge of an open fan, or all the way round
-    let first = h;
-    let open = false;
-    for (let steps = 0; ; steps++) {
-      const t = hePrev[first] ^ 1;
-      if (heFace[t] === -1) {
-        open = true;
-        break;
-      }
-      if (t === h) break;
-      if (steps > nH) throw new Error(`buildMesh: the fan around vertex ${v} does not close`);
-      first = t;
-    }
     let w = v;
-    if (mesh.vHalfedge[v] !== -1) {
+    if (vHalfedge[v] !== -1) {
       w = mesh.addVertex();
       mesh.vertexAttributes.copy(w, v);
+      vHalfedge = mesh.vHalfedge;
       let list = copies.get(v);
       if (!list) copies.set(v, (list = []));
       list.push(w);
     }
-    // rotate clockwise (next of twin) across the whole fan, claiming its halfedges for w
-    let x = first;
-    do {
+    // rotate clockwise (next of twin) from h, claiming the fan's halfedges for w, until it closes
+    // or meets the boundary: one walk round a vertex inside the surface
+    let x = h;
+    let open = false;
+    for (let steps = 0; ; steps++) {
       visited[x] = 1;
-      heVertex[x] = w;
+      if (w !== v) heVertex[x] = w;
       const t = x ^ 1;
-      if (heFace[t] === -1) break;
+      if (heFace[t] === -1) {
+        open = true;
+        break;
+      }
       x = heNext[t];
-    } while (x !== first);
-    if (open) {
-      const boundaryOut = hePrev[first] ^ 1;
-      heVertex[boundaryOut] = w;
-      mesh.vHalfedge[w] = boundaryOut;
-    } else {
-      mesh.vHalfedge[w] = first;
+      if (x === h) break;
+      if (steps > nH) throw new Error(`buildMesh: the fan around vertex ${v} does not close`);
     }
+    if (!open) {
+      vHalfedge[w] = heNext[h ^ 1];
+      continue;
+    }
+    // an open fan: rotate counter-clockwise (twin of prev) from h to its first halfedge, claiming the rest
+    let first = h;
+    for (let steps = 0; ; steps++) {
+      const t = hePrev[first] ^ 1;
+      if (heFace[t] === -1) break;
+      first = t;
+      visited[first] = 1;
+      if (w !== v) heVertex[first] = w;
+      if (steps > nH) throw new Error(`buildMesh: the fan around vertex ${v} does not close`);
+    }
+    const boundaryOut = hePrev[first] ^ 1;
+    heVertex[boundaryOut] = w;
+    vHalfedge[w] = boundaryOut;
   }
   for (const [v, list] of copies) {
     report.add('non-manifold-vertex', {
