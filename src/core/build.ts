@@ -309,7 +309,8 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: 
     }
   }
   for (let v = 0; v < nV; v++) bucketStart[v + 1] += bucketStart[v];
-  // entries: (corner, upper vertex) pairs, side by side so one cache line holds both
+  // entries: (corner, upper vertex) pairs, side by side so one cache line holds both; the upper
+  // vertex is stored as ~hi (negative) when the corner runs from hi to lo
   const fill = bucketStart.slice(0, nV);
   const entries = new Int32Array(2 * nC);
   for (let f = 0; f < nF; f++) {
@@ -321,14 +322,15 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: 
       const b = corners[c + 1 < e ? c + 1 : s];
       const slot = 2 * fill[a < b ? a : b]++;
       entries[slot] = c;
-      entries[slot + 1] = a < b ? b : a;
+      entries[slot + 1] = a < b ? b : ~a;
     }
   }
 
-  // within a bucket, corners with the same upper vertex share an edge: stamp the upper vertex
-  // with the bucket it was last seen in and the first corner seen there (side by side again)
+  // within a bucket, corners with the same upper vertex share an edge: stamp the upper vertex with
+  // the bucket it was last seen in, the first corner seen there (~c when it runs down) and its
+  // partner (or -1), side by side again, so the pairing reads nothing but the entries in order
   const twin = new Int32Array(nC).fill(-1);
-  const stamps = new Int32Array(2 * nV).fill(-1);
+  const stamps = new Int32Array(3 * nV).fill(-1);
   const crowded: number[][] = [];
   const crowdedByFirst = new Map<number, number[]>();
   let sameDirectionPairs = 0;
@@ -337,18 +339,23 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: 
     const end = 2 * bucketStart[lo + 1];
     for (let slot = 2 * bucketStart[lo]; slot < end; slot += 2) {
       const c = entries[slot];
-      const hi = 2 * entries[slot + 1];
+      const upper = entries[slot + 1];
+      const down = upper < 0;
+      const hi = 3 * (down ? ~upper : upper);
       if (stamps[hi] !== lo) {
         stamps[hi] = lo;
-        stamps[hi + 1] = c;
+        stamps[hi + 1] = down ? ~c : c;
+        stamps[hi + 2] = -1;
         continue;
       }
-      const first = stamps[hi + 1];
-      const partner = twin[first];
+      const stamped = stamps[hi + 1];
+      const first = stamped < 0 ? ~stamped : stamped;
+      const partner = stamps[hi + 2];
       if (partner === -1) {
+        stamps[hi + 2] = c;
         twin[first] = c;
         twin[c] = first;
-        if (corners[first] === corners[c]) sameDirectionPairs++;
+        if (stamped < 0 === down) sameDirectionPairs++;
         continue;
       }
       // a third (or later) corner on this edge; -2 marks the first corner of a crowded edge
