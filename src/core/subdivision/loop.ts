@@ -42,16 +42,18 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   const E = mesh.edgeSlots;
   const F = mesh.faceSlots;
 
-  // compute the new positions while the old one-rings are intact
-  const attributes = blendedAttributes(mesh);
-  const edgePoints = attributes.map((a) => loopEdgePoints(mesh, a.data));
-  const vertexPoints = attributes.map((a) => loopVertexPoints(mesh, a.data));
-
   // reserve memory
   mesh.reserve({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
 
+  // compute the new positions while the old one-rings are intact. Straight through, no phase shows
+  // the edge points at the midpoints first: they go where they end (vertex V + e for edge e), as
+  // the stencil reads old vertices only
+  const attributes = blendedAttributes(mesh);
+  const edgePoints = attributes.map((a) => (listIds ? loopEdgePoints(mesh, a.data, new Float64Array(3 * E), 0) : loopEdgePoints(mesh, a.data, a.data, V)));
+  const vertexPoints = attributes.map((a) => loopVertexPoints(mesh, a.data));
+
   // split edges
-  const split = splitEdges(mesh, 'all', 2, listIds);
+  const split = splitEdges(mesh, 'all', 2, listIds, !listIds);
   yield {
     name: 'split every edge',
     explanation:
@@ -70,7 +72,7 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   };
 
   // place the new (odd) vertices
-  storeValues(attributes, edgePoints, V);
+  if (listIds) storeValues(attributes, edgePoints as Float64Array[], V);
   yield {
     name: 'place the edge points',
     explanation:
@@ -91,15 +93,17 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   };
 }
 
-/** The odd stencil: the new point of each edge e, three numbers per edge, in edge order. */
-function loopEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64Array {
+/**
+ * The odd stencil: the new point of each edge e, three numbers per edge, written to `out` as the
+ * values of vertex `first + e` (and returned).
+ */
+function loopEdgePoints<T extends Float64Array | Float32Array>(mesh: HalfedgeMesh, x: ArrayLike<number>, out: T, first: number): T {
   const { hePrev, heVertex, heFace } = mesh;
   const E = mesh.edgeSlots;
-  const out = new Float64Array(3 * E);
   for (let e = 0; e < E; e++) {
     const h = 2 * e;
     const t = h + 1;
-    const o = 3 * e;
+    const o = 3 * (first + e);
     const a = 3 * heVertex[h];
     const b = 3 * heVertex[t];
     // boundary edge?

@@ -78,8 +78,11 @@ export function appendSlots(mesh: HalfedgeMesh, vertices: number, edges: number,
  *
  * Every face whose edges were split afterwards starts (`fHalfedge`) at a new vertex, which is where
  * `cutCorners` and `fanFaces` begin their walk.
+ *
+ * The new vertices are put evenly along their edges (`placeOnEdges`), unless `blendedInPlace`
+ * says the caller has already written their blended attributes (see `stencil.ts`) where they end.
  */
-export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces: number, listIds: boolean): TopologyChange {
+export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces: number, listIds: boolean, blendedInPlace = false): TopologyChange {
   const V = mesh.vertexSlots;
   const E = mesh.edgeSlots;
   const F = mesh.faceSlots;
@@ -89,7 +92,7 @@ export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces
   const perEdge = pieces - 1;
   const added = perEdge * count;
   appendSlots(mesh, added, added, 0);
-  placeOnEdges(mesh, count, edgeAt, pieces, V);
+  placeOnEdges(mesh, count, edgeAt, pieces, V, blendedInPlace);
 
   const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
   // where each old edge is in the list (-1: not split), to find the pieces of a neighbour
@@ -190,13 +193,14 @@ export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces
 
 /**
  * Puts the new vertices of `splitEdges` evenly along their edges (run before the split): blended
- * attributes are interpolated, the others copied from the edge's first end.
+ * attributes are interpolated (unless `blendedInPlace`), the others copied from the edge's first end.
  */
-function placeOnEdges(mesh: HalfedgeMesh, count: number, edgeAt: (i: number) => number, pieces: number, firstVertex: number): void {
+function placeOnEdges(mesh: HalfedgeMesh, count: number, edgeAt: (i: number) => number, pieces: number, firstVertex: number, blendedInPlace: boolean): void {
   const { heVertex } = mesh;
   for (const attribute of mesh.vertexAttributes) {
     const { data, itemSize: n } = attribute;
     const blend = isBlended(attribute);
+    if (blend && blendedInPlace) continue;
     for (let i = 0; i < count; i++) {
       const a = heVertex[2 * edgeAt(i)];
       const b = heVertex[2 * edgeAt(i) + 1];
