@@ -41,15 +41,16 @@ export function cannotSubdivide(mesh: HalfedgeMesh, scheme: SubdivisionScheme): 
  * pass over the faces, looking across each one's three edges.
  */
 function twoTrianglesOnTwoEdges(mesh: HalfedgeMesh, scheme: string): string | null {
-  const { heNext, heFace, fHalfedge } = mesh;
-  for (const f of mesh.faces()) {
+  const { heNext, heFace, fHalfedge, fDeleted } = mesh;
+  for (let f = 0; f < mesh.faceSlots; f++) {
+    if (fDeleted[f]) continue;
     const h = fHalfedge[f];
-    const across = [heFace[h ^ 1], heFace[heNext[h] ^ 1], heFace[heNext[heNext[h]] ^ 1]];
-    for (let k = 0; k < 3; k++) {
-      const g = across[k];
-      if (g !== -1 && g === across[(k + 1) % 3]) {
-        return `${scheme} cannot split f${f} and f${g}: they share two edges (the same three corners), so it would join two new vertices twice.`;
-      }
+    const a = heFace[h ^ 1];
+    const b = heFace[heNext[h] ^ 1];
+    const c = heFace[heNext[heNext[h]] ^ 1];
+    const g = a !== -1 && (a === b || a === c) ? a : b !== -1 && b === c ? b : -1;
+    if (g !== -1) {
+      return `${scheme} cannot split f${f} and f${g}: they share two edges (the same three corners), so it would join two new vertices twice.`;
     }
   }
   return null;
