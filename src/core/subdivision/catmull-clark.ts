@@ -61,9 +61,10 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   // the old vertices move last, by a rule that reads their old edges and faces: compute it now
   const vertexPoints = attributes.map((a) => catmullClarkVertexPoints(mesh, a.data, V));
 
-  // split edges at their edge points (vertex V + F + e for edge e)
-  const split = splitEdges(mesh, 'all', 2, listIds);
-  for (const a of attributes) moveToEdgePoints(mesh, a.data, E, V, V + F);
+  // split edges at their edge points (vertex V + F + e for edge e), placed first while each edge
+  // still joins its two ends
+  for (const a of attributes) placeEdgePoints(mesh, a.data, E, V, V + F);
+  const split = splitEdges(mesh, 'all', 2, listIds, true);
   yield {
     name: 'split every edge at its edge point',
     explanation:
@@ -94,23 +95,30 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
 }
 
 /**
- * Moves each interior edge point from the midpoint, where the split put it, to the mean of the
- * edge's ends and its two face points: halfway between the midpoint and the face points' mean.
- * The split kept both halfedges of edge e in their faces, so those still name the face points.
+ * Puts the point of each edge e (vertex `firstEdgePoint + e`, in room reserved beyond the vertices
+ * in use) at the mean of the edge's two ends and the two face points beside it (vertex
+ * `firstFacePoint + f` for face f), or at its midpoint on the boundary.
  */
-function moveToEdgePoints(mesh: HalfedgeMesh, x: Float64Array | Float32Array, E: number, firstFacePoint: number, firstEdgePoint: number): void {
-  const { heFace } = mesh;
+function placeEdgePoints(mesh: HalfedgeMesh, x: Float64Array | Float32Array, E: number, firstFacePoint: number, firstEdgePoint: number): void {
+  const { heFace, heVertex } = mesh;
   for (let e = 0; e < E; e++) {
+    const a = 3 * heVertex[2 * e];
+    const b = 3 * heVertex[2 * e + 1];
     const f0 = heFace[2 * e];
     const f1 = heFace[2 * e + 1];
-    // boundary edge: the midpoint is the edge point
-    if (f0 === -1 || f1 === -1) continue;
     const m = 3 * (firstEdgePoint + e);
+    // boundary edge: the midpoint is the edge point
+    if (f0 === -1 || f1 === -1) {
+      x[m] = (x[a] + x[b]) / 2;
+      x[m + 1] = (x[a + 1] + x[b + 1]) / 2;
+      x[m + 2] = (x[a + 2] + x[b + 2]) / 2;
+      continue;
+    }
     const p = 3 * (firstFacePoint + f0);
     const q = 3 * (firstFacePoint + f1);
-    x[m] = (x[m] + (x[p] + x[q]) / 2) / 2;
-    x[m + 1] = (x[m + 1] + (x[p + 1] + x[q + 1]) / 2) / 2;
-    x[m + 2] = (x[m + 2] + (x[p + 2] + x[q + 2]) / 2) / 2;
+    x[m] = ((x[a] + x[b]) / 2 + (x[p] + x[q]) / 2) / 2;
+    x[m + 1] = ((x[a + 1] + x[b + 1]) / 2 + (x[p + 1] + x[q + 1]) / 2) / 2;
+    x[m + 2] = ((x[a + 2] + x[b + 2]) / 2 + (x[p + 2] + x[q + 2]) / 2) / 2;
   }
 }
 
