@@ -210,11 +210,19 @@ function isSimpleFace(indices: PolygonSoup['faceIndices'], s: number, e: number,
     const v = indices[i];
     if (!(v >= 0 && v < nV)) return false;
   }
+  // triangles and quads, most faces of most files: compare the corners pairwise
   if (k === 3) {
     const a = indices[s];
     const b = indices[s + 1];
     const c = indices[s + 2];
     return a !== b && b !== c && c !== a;
+  }
+  if (k === 4) {
+    const a = indices[s];
+    const b = indices[s + 1];
+    const c = indices[s + 2];
+    const d = indices[s + 3];
+    return a !== b && a !== c && a !== d && b !== c && b !== d && c !== d;
   }
   stamp.next();
   for (let i = s; i < e; i++) if (stamp.seen(indices[i])) return false;
