@@ -164,10 +164,6 @@ export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces
       heNext[tPrev] = bOut;
       if (listIds) rewiredNeighbours.push(tPrev);
     }
-    if (vHalfedge[b] === t) {
-      vHalfedge[b] = bOut;
-      if (listIds) rewiredVertices.push(b);
-    }
     // start each face at a new vertex
     if (hFace !== -1) {
       fHalfedge[hFace] = heNext[h];
@@ -177,6 +173,14 @@ export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces
       fHalfedge[tFace] = t;
       if (rewiredFaces !== null) rewiredFaces[tFace] = 1;
     }
+  }
+  // an old vertex that left by the odd halfedge of a split edge now leaves by its last piece: one
+  // pass in vertex order (asking at each edge whether its far end left by it reads at random)
+  for (let v = 0; v < V; v++) {
+    const h = vHalfedge[v];
+    if (h < 0 || (h & 1) === 0 || !isSplit(h)) continue;
+    vHalfedge[v] = firstPieceOf(h);
+    if (listIds) rewiredVertices.push(v);
   }
   if (!listIds) return { created: {}, rewired: {} };
   const rewiredHalfedges = new Int32Array(2 * count + rewiredNeighbours.length);
