@@ -7,7 +7,8 @@
  * figure of each side is the median of its rounds. Every side runs in a process of its own with
  * the natives' policy: the input prepared outside the timed region, one warm-up, then the median
  * of 5 runs (3 when the warm-up took over 3 s, 1 over 30 s); our side is `native-child.mjs`, on
- * the library as built (`dist/`). Peak memory is each process's largest resident set. Decimation also runs meshoptimizer's `simplify` (WebAssembly) to the same count.
+ * the library as built (`dist/`). Peak memory is each process's largest resident set. Decimation
+ * also runs meshoptimizer's `simplify` (WebAssembly) to the same face count.
  *
  * Without the native peers set up (`run.sh setup`), it says so and prints no native rows.
  */
@@ -21,7 +22,7 @@ const here = dirname(fileURLToPath(import.meta.url));
 const peersDir = resolve(process.env.NATIVE_PEERS ?? join(here, '../../shared/native-peers'));
 const peersEnv = process.env.NATIVE_PEERS_ENV ?? '/tmp/native-peers';
 
-export type NativeOp = 'build' | 'read' | 'loop' | 'cc' | 'clip_cap' | 'decimate';
+type NativeOp = 'build' | 'read' | 'loop' | 'cc' | 'clip_cap' | 'decimate';
 
 /** One comparison: an operation of `run.sh` on one of its meshes. */
 interface NativeCase {
@@ -53,7 +54,7 @@ interface Measured {
 }
 
 /** Whether `run.sh` can run without installing anything. */
-export function nativePeersReady(): boolean {
+function nativePeersReady(): boolean {
   return existsSync(join(peersDir, 'run.sh')) && existsSync(join(peersEnv, 'bin/cgal_bench')) && existsSync(join(peersEnv, 'bin/openmesh_bench'));
 }
 
