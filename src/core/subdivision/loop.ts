@@ -49,7 +49,8 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   // the edge points at the midpoints first: they go where they end (vertex V + e for edge e), as
   // the stencil reads old vertices only
   const attributes = blendedAttributes(mesh);
-  const edgePoints = attributes.map((a) => (listIds ? loopEdgePoints(mesh, a.data, new Float64Array(3 * E), 0) : loopEdgePoints(mesh, a.data, a.data, V)));
+  const edgePoints = listIds ? attributes.map(() => new Float64Array(3 * E)) : null;
+  attributes.forEach((a, i) => loopEdgePoints(mesh, a.data, edgePoints?.[i] ?? a.data, edgePoints ? 0 : V));
   const vertexPoints = attributes.map((a) => loopVertexPoints(mesh, a.data));
 
   // split edges
@@ -72,7 +73,7 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   };
 
   // place the new (odd) vertices
-  if (listIds) storeValues(attributes, edgePoints as Float64Array[], V);
+  if (edgePoints) storeValues(attributes, edgePoints, V);
   yield {
     name: 'place the edge points',
     explanation:
@@ -95,9 +96,9 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
 
 /**
  * The odd stencil: the new point of each edge e, three numbers per edge, written to `out` as the
- * values of vertex `first + e` (and returned).
+ * values of vertex `first + e`.
  */
-function loopEdgePoints<T extends Float64Array | Float32Array>(mesh: HalfedgeMesh, x: ArrayLike<number>, out: T, first: number): T {
+function loopEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>, out: Float64Array | Float32Array, first: number): void {
   const { hePrev, heVertex, heFace } = mesh;
   const E = mesh.edgeSlots;
   for (let e = 0; e < E; e++) {
@@ -120,7 +121,6 @@ function loopEdgePoints<T extends Float64Array | Float32Array>(mesh: HalfedgeMes
     out[o + 1] = (3 / 8) * (x[a + 1] + x[b + 1]) + (1 / 8) * (x[c + 1] + x[d + 1]);
     out[o + 2] = (3 / 8) * (x[a + 2] + x[b + 2]) + (1 / 8) * (x[c + 2] + x[d + 2]);
   }
-  return out;
 }
 
 /**
