@@ -1,13 +1,16 @@
 /**
  * Our side of one native comparison (see `native.ts`), in plain Node on the built library:
  * `node --expose-gc native-child.mjs OP FILE ours|meshoptimizer` prints one JSON line,
- * `{ lib, ms, peakMB, inFaces, outFaces }`. The timing policy is the native harnesses'
- * (`bench_common.h`): the input prepared outside the timed region, one warm-up, then the median of
- * 5 runs (3 when the warm-up took over 3 s, 1 over 30 s).
+ * `{ lib, ms, peakMB, inFaces, outFaces }`, and for decimation `distance`: how far the result
+ * strays from the input (see `surface-distance.mjs`), measured after the peak memory is taken.
+ * The timing policy is the native harnesses' (`bench_common.h`): the input prepared outside the
+ * timed region, one warm-up, then the median of 5 runs (3 when the warm-up took over 3 s, 1 over
+ * 30 s).
  */
 import { readFileSync } from 'node:fs';
 import { MeshoptSimplifier } from 'meshoptimizer';
 import { buildMesh, cutMesh, decimate, readMesh, subdivide } from '../dist/index.js';
+import { distanceToSurface, triangleIndices } from './surface-distance.mjs';
 
 const [op, file, lib] = process.argv.slice(2);
 
@@ -39,6 +42,8 @@ const soupOf = () => readMesh(readFileSync(file)).soup;
 let ms;
 let inFaces;
 let outFaces;
+/** For decimation: the input's vertices, and the result's positions and triangles. */
+let strayFrom;
 if (op === 'read') {
   // reading the file is part of it, as for the natives
   ms = timeLikeNatives(() => {}, () => (outFaces = buildMesh(readMesh(readFileSync(file)).soup).mesh.nFaces));
@@ -54,7 +59,9 @@ if (op === 'read') {
   const positions = new Float32Array(soup.positions);
   inFaces = indices.length / 3;
   const target = 3 * Math.round(inFaces / 10);
-  ms = timeLikeNatives(() => {}, () => (outFaces = MeshoptSimplifier.simplify(indices, positions, 3, target, 1)[0].length / 3));
+  let result;
+  ms = timeLikeNatives(() => {}, () => (outFaces = (result = MeshoptSimplifier.simplify(indices, positions, 3, target, 1)[0]).length / 3));
+  strayFrom = { points: soup.positions, positions, indices: result };
 } else {
   const input = buildMesh(soupOf()).mesh;
   inFaces = input.nFaces;
@@ -66,6 +73,8 @@ if (op === 'read') {
       outFaces = copy.nFaces;
     },
   );
+  if (op === 'decimate') strayFrom = { points: input.positions.subarray(0, 3 * input.vertexSlots), positions: copy.positions, indices: triangleIndices(copy) };
 }
 const peakMB = Math.round(process.resourceUsage().maxRSS / 1024);
-console.log(JSON.stringify({ lib, ms: Math.round(ms * 10) / 10, peakMB, inFaces, outFaces }));
+const distance = strayFrom && distanceToSurface(strayFrom.points, strayFrom.positions, strayFrom.indices);
+console.log(JSON.stringify({ lib, ms: Math.round(ms * 10) / 10, peakMB, inFaces, outFaces, ...(distance ? { distance } : {}) }));
