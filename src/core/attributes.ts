@@ -156,7 +156,7 @@ export class AttributeSet {
       const next = new attributeArrayTypes[attribute.type](newCount * itemSize);
       for (let i = 0; i < oldToNew.length; i++) {
         const j = oldToNew[i];
-        if (j >= 0) next.set(data.subarray(i * itemSize, (i + 1) * itemSize), j * itemSize);
+        if (j >= 0) for (let k = 0; k < itemSize; k++) next[j * itemSize + k] = data[i * itemSize + k];
       }
       attribute.data = next;
     }

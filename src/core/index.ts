@@ -17,6 +17,7 @@ export * from './operation.js';
 export * from './report.js';
 export * from './serialize.js';
 export * from './shapes.js';
+export * from './spatial-order.js';
 export * from './soup.js';
 export * from './seams.js';
 export * from './stats.js';

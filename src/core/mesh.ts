@@ -43,7 +43,7 @@ export interface MeshCapacity {
   faces: number;
 }
 
-/** Old id → new id (-1 for a deleted element), as returned by `compact()`. */
+/** Old id → new id (-1 for a deleted element), as returned by `compact()` and taken by `renumber()`. */
 export interface CompactionMaps {
   vertices: Int32Array;
   edges: Int32Array;
@@ -371,25 +371,37 @@ export class HalfedgeMesh {
    * arrays to fit. Returns old → new id maps (-1 for the deleted) so callers can follow selections.
    */
   compact(): CompactionMaps {
-    const maps: Record<ElementKind, Int32Array> = {
-      vertex: liveMap(this.vertexSlots, (v) => this.vDeleted[v] === 0),
-      edge: liveMap(this.edgeSlots, (e) => this.eDeleted[e] === 0),
-      face: liveMap(this.faceSlots, (f) => this.fDeleted[f] === 0),
-      halfedge: new Int32Array(2 * this.edgeSlots),
+    const maps: CompactionMaps = {
+      vertices: liveMap(this.vertexSlots, (v) => this.vDeleted[v] === 0),
+      edges: liveMap(this.edgeSlots, (e) => this.eDeleted[e] === 0),
+      faces: liveMap(this.faceSlots, (f) => this.fDeleted[f] === 0),
     };
+    this.renumber(maps);
+    return maps;
+  }
+
+  /**
+   * Gives every live element the new id its map says (old id → new id), dropping the deleted
+   * ones (-1), and shrinks the arrays to fit: `compact()` keeps the order, `spatialOrder` makes one.
+   * The maps must send the live elements of each kind onto 0 … (live count − 1), once each.
+   */
+  renumber(maps: CompactionMaps): void {
+    const edge = maps.edges;
+    const halfedge = new Int32Array(2 * this.edgeSlots);
     for (let e = 0; e < this.edgeSlots; e++) {
-      const ne = maps.edge[e];
-      maps.halfedge[2 * e] = ne < 0 ? -1 : 2 * ne;
-      maps.halfedge[2 * e + 1] = ne < 0 ? -1 : 2 * ne + 1;
+      const ne = edge[e];
+      halfedge[2 * e] = ne < 0 ? -1 : 2 * ne;
+      halfedge[2 * e + 1] = ne < 0 ? -1 : 2 * ne + 1;
     }
+    const byKind: Record<ElementKind, Int32Array> = { vertex: maps.vertices, halfedge, edge, face: maps.faces };
     const live: Record<ElementKind, number> = { vertex: this.nVertices, halfedge: 2 * this.nEdges, edge: this.nEdges, face: this.nFaces };
     for (const spec of meshArrays) {
       const old = this[spec.name];
-      const map = maps[spec.owner];
+      const map = byKind[spec.owner];
       // flags are all 0 afterwards: only live elements remain
       const next = new spec.type(live[spec.owner]);
       if (spec.refers) {
-        const target = maps[spec.refers];
+        const target = byKind[spec.refers];
         for (let i = 0; i < map.length; i++) {
           const j = map[i];
           if (j >= 0) next[j] = old[i] < 0 ? old[i] : target[old[i]];
@@ -397,12 +409,11 @@ export class HalfedgeMesh {
       }
       setMeshArray(this, spec.name, next);
     }
-    for (const kind of elementKinds) attributeSetOf(this, kind).permute(maps[kind], live[kind]);
+    for (const kind of elementKinds) attributeSetOf(this, kind).permute(byKind[kind], live[kind]);
     this.vertexSlots = live.vertex;
     this.edgeSlots = live.edge;
     this.faceSlots = live.face;
     this.deletedVertices = this.deletedEdges = this.deletedFaces = 0;
-    return { vertices: maps.vertex, edges: maps.edge, faces: maps.face };
   }
 
   /** A deep copy, attributes included, with no spare capacity. */

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { keepsOrientation } from '../../src/core/decimation/collapses.js';
 import { addPlane, optimalPoint, quadricError } from '../../src/core/decimation/quadric.js';
-import { CollapseQueue } from '../../src/core/decimation/queue.js';
+import { Candidates } from '../../src/core/decimation/candidates.js';
 import { halfedgeFromTo } from '../../src/core/edits/index.js';
 import { seededRandom } from '../../src/core/random.js';
 import { disk } from '../../src/core/shapes.js';
@@ -9,66 +9,48 @@ import { meshOf } from './helpers.js';
 
 const SEED = 4242;
 
-describe('the collapse queue', () => {
-  it(`pops entries in the order of a sort, pushed and heapified alike (seed ${SEED})`, () => {
-    const next = seededRandom(SEED);
-    const queue = new CollapseQueue(); // buckets start small, so they have to grow
-    const entries: Array<[number, number]> = [];
-    for (let i = 0; i < 500; i++) {
-      const cost = Math.floor(next() * 100); // ties included
-      entries.push([cost, i]);
-      if (i < 300) queue.append(cost, i);
-      else queue.push(cost, i);
-      if (i === 299) queue.heapify();
-    }
-    const popped: number[] = [];
-    while (queue.size > 0) {
-      popped.push(queue.topCost);
-      queue.pop();
-    }
-    expect(popped).toEqual(entries.map(([cost]) => cost).sort((p, q) => p - q));
-  });
+describe('the candidates of a pass', () => {
+  /** Costs for edges 0 … n − 1 (some never allowed), counted as a pass counts them. */
+  function counted(candidates: Candidates, costs: number[]): { live: Int32Array; bits: Uint32Array } {
+    const floats = Float32Array.from(costs);
+    const bits = new Uint32Array(floats.buffer);
+    const live = Int32Array.from(costs.keys());
+    for (const e of live) candidates.count(bits[e]);
+    return { live, bits };
+  }
 
-  it(`always pops the cheapest, however pushes and pops interleave, across costs from 0 to 1e12 (seed ${SEED})`, () => {
+  it(`collects the cheapest in order of cost, and all a half more costly than the wanted-th (seed ${SEED})`, () => {
     const next = seededRandom(SEED);
-    const queue = new CollapseQueue();
-    const held: number[] = []; // the reference: every cost in the queue
-    const randomCost = () => (next() < 0.05 ? 0 : 10 ** (24 * next() - 12) * (1 + next()));
-    // a queue cleared after use starts afresh
-    for (let i = 0; i < 100; i++) queue.push(randomCost(), i);
-    queue.clear();
-    expect(queue.size).toBe(0);
-    for (let i = 0; i < 3000; i++) {
-      const cost = randomCost();
-      queue.append(cost, i);
-      held.push(cost);
-    }
-    queue.heapify();
-    for (let step = 0; step < 20000; step++) {
-      if (next() < 0.45 || held.length === 0) {
-        // a push, sometimes far below everything held (a newly allowed cheap edge)
-        const cost = next() < 0.1 ? randomCost() * 1e-6 : randomCost();
-        queue.push(cost, step);
-        held.push(cost);
-      } else {
-        const cheapest = Math.min(...held);
-        expect(queue.topCost).toBe(cheapest);
-        held.splice(held.indexOf(cheapest), 1);
-        queue.pop();
-      }
-      expect(queue.size).toBe(held.length);
+    const candidates = new Candidates(); // its arrays start small, so they have to grow
+    for (const wanted of [1, 10, 700, 5000]) {
+      // costs from 0 to 1e12, ties, and edges that may never collapse
+      const costs = Array.from({ length: 3000 }, () => (next() < 0.05 ? 0 : next() < 0.1 ? Infinity : Math.fround(10 ** (24 * next() - 12))));
+      const { live, bits } = counted(candidates, costs);
+      expect(candidates.counted).toBe(costs.filter((c) => c < Infinity).length);
+      candidates.collect(live, live.length, bits, wanted);
+      const collected = Array.from(candidates.edges.subarray(0, candidates.size));
+      const collectedCosts = collected.map((e) => costs[e]);
+      expect(collectedCosts).toEqual([...collectedCosts].sort((p, q) => p - q));
+      collected.forEach((e, i) => expect(candidates.costAt(i)).toBe(costs[e]));
+      // stable: equal costs in edge order
+      for (let i = 1; i < collected.length; i++) if (collectedCosts[i] === collectedCosts[i - 1]) expect(collected[i]).toBeGreaterThan(collected[i - 1]);
+      const finite = costs.filter((c) => c < Infinity).sort((p, q) => p - q);
+      const bar = wanted <= finite.length ? 1.5 * finite[wanted - 1] : Infinity;
+      const mustHave = costs.flatMap((c, e) => (c < Infinity && c <= bar ? [e] : []));
+      expect(mustHave.length).toBeGreaterThanOrEqual(Math.min(wanted, finite.length));
+      expect(collected.filter((e) => costs[e] <= bar)).toEqual(mustHave.sort((p, q) => costs[p] - costs[q] || p - q));
+      expect(collected.every((e) => costs[e] < Infinity)).toBe(true);
+      // the counts start again at zero
+      expect(candidates.counted).toBe(0);
     }
   });
 
-  it('keeps each entry’s edge with its cost', () => {
-    const queue = new CollapseQueue();
-    [5, 1, 4, 2, 3].forEach((cost) => queue.push(cost, 10 * cost));
-    const edges: number[] = [];
-    while (queue.size > 0) {
-      edges.push(queue.topEdge);
-      queue.pop();
-    }
-    expect(edges).toEqual([10, 20, 30, 40, 50]);
+  it('collects nothing when every edge is out', () => {
+    const candidates = new Candidates();
+    const { live, bits } = counted(candidates, [Infinity, Infinity]);
+    expect(candidates.counted).toBe(0);
+    candidates.collect(live, live.length, bits, 1);
+    expect(candidates.size).toBe(0);
   });
 });
 

@@ -1,7 +1,20 @@
 /**
  * The machinery of quadric decimation: each vertex's quadric, each edge's planned collapse (where
- * the merged vertex goes and what that costs), the queue, and the loop that collapses the cheapest
- * edge again and again. `index.ts` runs it in phases.
+ * the merged vertex goes and what that costs), and the passes that collapse the cheapest edges.
+ * `index.ts` runs it in phases.
+ *
+ * A pass collapses many edges at once, cheapest first, but none that shares a vertex with another
+ * collapse of the same pass (as meshoptimizer's simplifier does): an edge whose ends no collapse
+ * has touched still has the quadrics and positions it was planned with, so its plan is exact
+ * without asking again. Each pass:
+ *   1. plans again the edges of the vertices the last pass touched, in edge order (the rest keep
+ *      their plans), and counts the costs (`candidates.ts`);
+ *   2. collects the cheapest, about as many as the pass is to collapse, and sorts them;
+ *   3. walks them in order, skipping an edge with a touched end, and collapses each that the
+ *      checks below allow, until the pass has taken its faces, or the costs climb past 1.5 times
+ *      the cost the pass expected to reach (once it has taken a sixth of its faces: on a mesh
+ *      where most of the cheap edges share vertices it still makes progress).
+ * A collapse touches its two ends; their other edges wait for the next pass, planned again.
  *
  * Boundaries: a boundary vertex stays exactly where it is, so an open surface keeps its rim.
  *   - An edge with one end on the boundary collapses onto that end (the interior end moves).
@@ -16,19 +29,21 @@
  * Before each collapse, `canCollapseEdge` checks the topology (the link condition, no pinch, no
  * dangling edge) and `keepsOrientation` the geometry: no triangle around the two ends may turn
  * its normal by 90° or more, or lose all its area, so the surface never folds over itself. A
- * refused edge leaves the queue; it comes back when one of its ends survives a later collapse,
- * and, should the queue run dry before the target, every edge gets one more chance (as long as
- * the round before collapsed something).
+ * refused edge is out until one of its ends is touched by a later collapse, and, should no edge
+ * be left before the target, every edge gets one more chance (as long as something collapsed
+ * since the last chance).
  */
 import { canCollapseEdge, collapseEdgeAt } from '../edits/collapse.js';
 import { PointerWriter } from '../edits/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import type { ElementIds } from '../operation.js';
-import { CollapseQueue } from './queue.js';
+import { Candidates } from './candidates.js';
 import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError } from './quadric.js';
 
 /** Weight of a boundary edge's constraint plane, per unit of the edge's squared length. */
 const BOUNDARY_WEIGHT = 1000;
+/** A pass stops at costs this many times the one it expected to reach (see above). */
+const COST_OVERSHOOT = 1.5;
 
 export class Decimator {
   readonly mesh: HalfedgeMesh;
@@ -38,12 +53,25 @@ export class Decimator {
   private readonly quadrics: Float64Array;
   /** 1 where the vertex is on the boundary: the mesh says so too, but in two cache misses. */
   private readonly onBoundary: Uint8Array;
-  /** 1 where the edge has an entry in the queue (it never has two). */
-  private readonly queued: Uint8Array;
-  private readonly queue: CollapseQueue;
+  /**
+   * Each edge's cost as last planned, as float32 (the bits order them as the costs do): Infinity
+   * where it may not collapse now (never, past the error limit, or refused until an end is touched).
+   */
+  private readonly costs: Float32Array;
+  private readonly costBits: Uint32Array;
+  /** The edges alive at the last pass, in id order (the first `liveCount`). */
+  private readonly live: Int32Array;
+  private liveCount = 0;
+  /** 1 for each vertex a collapse of this pass (until its next scan: of the last pass) touched. */
+  private readonly touched: Uint8Array;
+  /** The next scan plans every live edge, not only those the last pass touched. */
+  private planEveryEdge = true;
+  private readonly candidates = new Candidates();
+  /** The edges a pass chose to collapse (the first of them). */
+  private readonly chosen: Int32Array;
   /** Largest mean squared distance a merged vertex may have from its original planes. */
   private readonly maxSquaredError: number;
-  /** Collapses made, and refused by a check that a later collapse could change, since the last fill. */
+  /** Collapses made, and refused by a check that a later collapse could change, since every edge was last planned. */
   private collapsedSinceFill = 0;
   private refusedSinceFill = 0;
   /** True once no allowed collapse is left. */
@@ -60,96 +88,101 @@ export class Decimator {
     this.quadrics = vertexQuadrics(mesh);
     this.onBoundary = new Uint8Array(mesh.vertexSlots);
     for (let v = 0; v < mesh.vertexSlots; v++) this.onBoundary[v] = mesh.isBoundaryVertex(v) ? 1 : 0;
-    this.queued = new Uint8Array(mesh.edgeSlots);
-    this.queue = new CollapseQueue();
+    this.costs = new Float32Array(mesh.edgeSlots);
+    this.costBits = new Uint32Array(this.costs.buffer);
+    this.live = new Int32Array(mesh.edgeSlots);
+    for (let e = 0; e < mesh.edgeSlots; e++) if (!mesh.eDeleted[e]) this.live[this.liveCount++] = e;
+    this.touched = new Uint8Array(mesh.vertexSlots);
+    this.chosen = new Int32Array(mesh.edgeSlots);
     this.maxSquaredError = maxError * maxError;
   }
 
-  /** Plans every live edge and builds the queue from scratch. */
-  fillQueue(): void {
-    const { mesh, queue, queued } = this;
-    queue.clear();
-    queued.fill(0);
-    for (let e = 0; e < mesh.edgeSlots; e++) {
-      if (mesh.eDeleted[e]) continue;
-      const cost = this.plan(e);
-      if (cost === Infinity) continue;
-      queue.append(cost, e);
-      queued[e] = 1;
-    }
-    queue.heapify();
-    this.collapsedSinceFill = 0;
-    this.refusedSinceFill = 0;
-  }
-
   /**
-   * Collapses the cheapest allowed edges until the mesh has at most `faceGoal` faces or nothing
-   * allowed is left. When `survivors` is given, lists the vertex that survived each collapse into
-   * it and returns the ids of what the batch removed; else returns no ids.
+   * Collapses the cheapest allowed edges, pass after pass, until the mesh has at most `faceGoal`
+   * faces or nothing allowed is left. When `survivors` is given, lists the vertex that survived
+   * each collapse into it and returns the ids of what was removed; else returns no ids.
    */
   collapseUntil(faceGoal: number, survivors: number[] | null): ElementIds {
-    const { mesh, queue, queued, quadrics: q, point } = this;
-    const { heVertex, hePrev, vHalfedge, eDeleted } = mesh; // a collapse never reallocates them
-    // one writer for the whole batch: no change list, and the removed ids only when listing
-    const w = new PointerWriter(mesh, { record: false, ids: survivors !== null });
-    while (mesh.nFaces > faceGoal && !this.exhausted) {
-      // the queue ran dry: once more with every edge, if a collapse may have freed a refused one
-      if (queue.size === 0) {
-        if (this.collapsedSinceFill === 0 || this.refusedSinceFill === 0) {
-          this.exhausted = true;
-          break;
-        }
-        this.fillQueue();
-        continue;
-      }
-      const e = queue.topEdge;
-      const filedCost = queue.topCost;
-      queue.pop();
-      // deleted since it was queued?
+    // one writer for all the passes: no change list, and the removed ids only when listing
+    const w = new PointerWriter(this.mesh, { record: false, ids: survivors !== null });
+    // Bounded: a pass that collapses nothing refuses at least one edge, which stays out until a
+    // collapse (or plans every edge again, which needs a collapse since the last time), or ends.
+    while (this.mesh.nFaces > faceGoal && !this.exhausted) this.pass(w, faceGoal, survivors);
+    return w.result().removed;
+  }
+
+  /** One pass (see above). */
+  private pass(w: PointerWriter, faceGoal: number, survivors: number[] | null): void {
+    const { mesh, costs, costBits, touched, candidates, quadrics: q, point } = this;
+    const { heVertex, eDeleted } = mesh; // a collapse never reallocates them
+
+    // 1. plan again where the last pass touched, drop the deleted edges, count the costs
+    const live = this.live;
+    let n = 0;
+    for (let i = 0; i < this.liveCount; i++) {
+      const e = live[i];
       if (eDeleted[e]) continue;
-      queued[e] = 0;
-      const cost = this.plan(e);
-      if (cost === Infinity) continue;
-      // filed under a cost that has gone up since: is it still the cheapest?
-      if (cost > filedCost && queue.size > 0 && cost > queue.topCost) {
-        queue.push(cost, e);
-        queued[e] = 1;
-        continue;
-      }
+      live[n++] = e;
+      if (this.planEveryEdge || touched[heVertex[2 * e]] || touched[heVertex[2 * e + 1]]) costs[e] = this.plan(e);
+      candidates.count(costBits[e]);
+    }
+    this.liveCount = n;
+    touched.fill(0);
+    if (this.planEveryEdge) {
+      this.planEveryEdge = false;
+      this.collapsedSinceFill = 0;
+      this.refusedSinceFill = 0;
+    }
+    // no edge allowed: once more with every edge, if a collapse may have freed a refused one
+    if (candidates.counted === 0) {
+      if (this.collapsedSinceFill === 0 || this.refusedSinceFill === 0) this.exhausted = true;
+      else this.planEveryEdge = true;
+      return;
+    }
+
+    // 2. the cheapest, in order: most collapses take two faces
+    const facesToGo = mesh.nFaces - faceGoal;
+    const wanted = Math.ceil(facesToGo / 2);
+    candidates.collect(live, n, costBits, wanted);
+    const { edges, size } = candidates;
+    const expectedCost = wanted <= size ? candidates.costAt(wanted - 1) : Infinity;
+
+    // 3. choose them, cheapest first, no two sharing a vertex
+    const chosen = this.chosen;
+    let nChosen = 0;
+    for (let i = 0, facesChosen = 0; i < size && facesChosen < facesToGo; i++) {
+      if (candidates.costAt(i) > COST_OVERSHOOT * expectedCost && facesChosen > facesToGo / 6) break;
+      const e = edges[i];
       const a = heVertex[2 * e];
       const b = heVertex[2 * e + 1];
-      // too far from the original surface? (its cost only grows, so this edge is done)
-      if (cost > this.maxSquaredError * (q[QUADRIC_SIZE * a + AREA] + q[QUADRIC_SIZE * b + AREA])) continue;
-      // would it break the surface, or fold it over?
+      if (touched[a] || touched[b]) continue;
+      touched[a] = 1;
+      touched[b] = 1;
+      chosen[nChosen++] = e;
+      facesChosen += 2;
+    }
+    // 4. collapse them in id order: in a mesh in spatial order, one after its neighbours
+    chosen.subarray(0, nChosen).sort();
+    for (let i = 0; i < nChosen && mesh.nFaces > faceGoal; i++) {
+      const e = chosen[i];
+      const a = heVertex[2 * e];
+      const b = heVertex[2 * e + 1];
+      this.plan(e);
       if (canCollapseEdge(mesh, e) !== null || !keepsOrientation(mesh, e, point[0], point[1], point[2])) {
+        costs[e] = Infinity;
         this.refusedSinceFill++;
+        // nothing changed at its ends: their other edges keep their plans
+        touched[a] = 0;
+        touched[b] = 0;
         continue;
       }
-
       // collapse: a survives at the planned point and stands for the planes of both ends
       collapseEdgeAt(w, e, point);
       for (let k = 0; k < QUADRIC_SIZE; k++) q[QUADRIC_SIZE * a + k] += q[QUADRIC_SIZE * b + k];
       this.onBoundary[a] |= this.onBoundary[b];
       this.collapsedSinceFill++;
       survivors?.push(a);
-
-      // the survivor's edges that are queued keep their entries (now lower bounds); the others
-      // (refused before, or too costly) get a new chance, as the neighbourhood has changed
-      const start = vHalfedge[a];
-      let h = start;
-      do {
-        const g = h >> 1;
-        if (!queued[g]) {
-          const gCost = this.plan(g);
-          if (gCost < Infinity) {
-            queue.push(gCost, g);
-            queued[g] = 1;
-          }
-        }
-        h = hePrev[h] ^ 1;
-      } while (h !== start);
     }
-    return w.result().removed;
   }
 
   /** For each vertex slot, the cost of the cheapest collapse of its edges as planned now (NaN: none). */
@@ -171,7 +204,8 @@ export class Decimator {
   /**
    * Plans the collapse of edge `e`: puts where its merged vertex goes into `point` and returns
    * what that costs (the summed quadric of the two ends, evaluated there), or Infinity when the
-   * edge may never collapse.
+   * edge may not collapse: never, or not within the error limit (which only grows more certain,
+   * as the ends only gain planes).
    */
   private plan(e: number): number {
     const { mesh, quadrics: q, sum, positions: p } = this;
@@ -202,9 +236,9 @@ export class Decimator {
       this.consider(b);
       this.considerPoint((p[3 * a] + p[3 * b]) / 2, (p[3 * a + 1] + p[3 * b + 1]) / 2, (p[3 * a + 2] + p[3 * b + 2]) / 2);
     }
-    return this.bestCost;
+    // too far from the original surface?
+    return this.bestCost > this.maxSquaredError * sum[AREA] ? Infinity : this.bestCost;
   }
-
   /** Keeps vertex `v`'s position in `point` when the summed quadric is smaller there. */
   private consider(v: number): void {
     const p = this.positions;
