@@ -145,12 +145,12 @@ describe('the phases', () => {
     expect([...last.rewired!.halfedges!].sort((p, q) => p - q)).toEqual(leaving.sort((p, q) => p - q));
   });
 
-  it('run straight through to the same mesh, renumbered in spatial order first', () => {
+  it('run straight through to the same mesh, renumbered in spatial order first, in one batch unless told', () => {
     const straight = meshOf(uvSphere(16, 32));
     const renumbering = decimate(straight, { targetFaces: 200 });
     const stepped = meshOf(uvSphere(16, 32));
     expect(spatialOrder(stepped)).toEqual(renumbering);
-    stepDecimation(stepped, { targetFaces: 200 });
+    expect(stepDecimation(stepped, { targetFaces: 200, batchFraction: 1 })).toHaveLength(2);
     expect([straight.heNext, straight.heVertex, straight.positions]).toEqual([stepped.heNext, stepped.heVertex, stepped.positions]);
   });
 

@@ -22,7 +22,7 @@
  *
  * Phases: "compute quadrics" (the quadrics; `values.vertices` is the cost of each
  * vertex's cheapest collapse, for a colour map, NaN where none is allowed), then batches of
- * collapses, each taking about `batchFraction` (default 10%) of the faces left, until the target.
+ * collapses, each taking about `batchFraction` (10% unless said) of the faces left, until the target.
  * A batch lists the vertices, edges and faces it removed, the survivors (moved, and rewired with
  * the halfedges leaving them) and the new cheapest costs. When stepping, collapsed elements are
  * only marked deleted, never compacted, so ids stay stable across phases and after the last one;
@@ -58,7 +58,11 @@ export interface DecimationOptions {
    * (weighted by area). Default: no limit.
    */
   maxError?: number;
-  /** Share of the faces left that one phase collapses, in (0, 1] (default 0.1). */
+  /**
+   * Share of the faces left that one phase collapses, in (0, 1]: default 0.1 when stepping, and
+   * 1 straight through, where there is nothing to show between phases (a phase ends after the
+   * pass that reaches its share, so smaller phases mean more, smaller passes).
+   */
   batchFraction?: number;
 }
 
@@ -101,7 +105,7 @@ export function decimation(mesh: HalfedgeMesh, options: DecimationOptions = {}):
  */
 export function decimate(mesh: HalfedgeMesh, options: DecimationOptions = {}): CompactionMaps {
   requireApplicable(mesh, options);
-  const settings = settingsOf(mesh, options);
+  const settings = settingsOf(mesh, { ...options, batchFraction: options.batchFraction ?? 1 });
   const renumbering = spatialOrder(mesh);
   const phases = decimationPhases(mesh, settings, false);
   while (!phases.next().done) {
