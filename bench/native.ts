@@ -8,7 +8,9 @@
  * the natives' policy: the input prepared outside the timed region, one warm-up, then the median
  * of 5 runs (3 when the warm-up took over 3 s, 1 over 30 s); our side is `native-child.mjs`, on
  * the library as built (`dist/`). Peak memory is each process's largest resident set. Decimation
- * also runs meshoptimizer's `simplify` (WebAssembly) to the same face count.
+ * also runs meshoptimizer's `simplify` (WebAssembly) to the same face count, and for ours and
+ * meshoptimizer's says how far the result strays from the input (`distance`: the largest and the
+ * mean distance from the input's vertices to the result's surface).
  *
  * Without the native peers set up (`run.sh setup`), it says so and prints no native rows.
  */
@@ -51,6 +53,8 @@ interface Measured {
   /** Faces of the input (ours only) and of the result. */
   inFaces?: number;
   outFaces: number;
+  /** Decimation, ours and meshoptimizer's: how far the result strays from the input (`surface-distance.mjs`). */
+  distance?: { max: number; mean: number };
 }
 
 /** Whether `run.sh` can run without installing anything. */
@@ -144,6 +148,7 @@ export async function runNativeComparison(args: string[]): Promise<void> {
       memoryRatio: round(ours!.peakMB / bestMemory, 2),
       peers: peers.map((p) => ({ ...p, ratio: round(ours!.ms / p.ms, 3) })),
       outFaces: ours!.outFaces,
+      ...(ours!.distance ? { distance: ours!.distance } : {}),
     };
     console.log(json ? JSON.stringify(result) : row(result));
   }
@@ -154,7 +159,18 @@ function header(): string {
   return ['case'.padEnd(30), 'faces'.padStart(9), 'ms'.padStart(9), '  best native'.padEnd(14), 'its ms'.padStart(9), 'ratio'.padStart(7), 'MB'.padStart(6), 'its MB'.padStart(7), '  others'].join('');
 }
 
-function row(r: { case: string; size: number; ms: number; peer: string; peerMs: number; ratio: number; peakMB: number; peerPeakMB: number; peers: Array<Measured & { ratio: number }> }): string {
+function row(r: {
+  case: string;
+  size: number;
+  ms: number;
+  peer: string;
+  peerMs: number;
+  ratio: number;
+  peakMB: number;
+  peerPeakMB: number;
+  peers: Array<Measured & { ratio: number }>;
+  distance?: Measured['distance'];
+}): string {
   return [
     r.case.padEnd(30),
     String(r.size).padStart(9),
@@ -164,6 +180,12 @@ function row(r: { case: string; size: number; ms: number; peer: string; peerMs: 
     r.ratio.toFixed(2).padStart(7),
     String(r.peakMB).padStart(6),
     String(r.peerPeakMB).padStart(7),
-    '  ' + r.peers.map((p) => `${p.lib} ${p.ms.toFixed(0)} ms ${p.peakMB} MB (×${p.ratio.toFixed(2)})`).join(', '),
+    '  ' + r.peers.map((p) => `${p.lib} ${p.ms.toFixed(0)} ms ${p.peakMB} MB (×${p.ratio.toFixed(2)})${strays(p)}`).join(', '),
+    r.distance ? `; ours${strays(r)}` : '',
   ].join('');
+}
+
+/** " strays max … mean …" for a side that measured it, else nothing. */
+function strays(m: { distance?: { max: number; mean: number } }): string {
+  return m.distance ? ` strays max ${m.distance.max.toExponential(2)} mean ${m.distance.mean.toExponential(2)}` : '';
 }
