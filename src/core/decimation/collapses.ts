@@ -10,10 +10,12 @@
  *   1. plans again the edges of the vertices the last pass touched, in edge order (the rest keep
  *      their plans), and counts the costs (`candidates.ts`);
  *   2. collects the cheapest, about as many as the pass is to collapse, and sorts them;
- *   3. walks them in order, skipping an edge with a touched end, and collapses each that the
- *      checks below allow, until the pass has taken its faces, or the costs climb past 1.5 times
- *      the cost the pass expected to reach (once it has taken a sixth of its faces: on a mesh
- *      where most of the cheap edges share vertices it still makes progress).
+ *   3. chooses them in that order, skipping an edge with an end already chosen, until the chosen
+ *      would take the pass's faces, or the costs climb past 1.5 times the cost the pass expected
+ *      to reach (once a sixth of its faces are chosen: on a mesh where most of the cheap edges
+ *      share vertices it still makes progress);
+ *   4. collapses the chosen in id order, each that the checks below allow: in a mesh in spatial
+ *      order (`spatialOrder`) each is near the one before, whose neighbourhood is in the cache.
  * A collapse touches its two ends; their other edges wait for the next pass, planned again.
  *
  * Boundaries: a boundary vertex stays exactly where it is, so an open surface keeps its rim.
@@ -62,7 +64,10 @@ export class Decimator {
   /** The edges alive at the last pass, in id order (the first `liveCount`). */
   private readonly live: Int32Array;
   private liveCount = 0;
-  /** 1 for each vertex a collapse of this pass (until its next scan: of the last pass) touched. */
+  /**
+   * 1 for each end of an edge the pass chose (0 again when its collapse is refused): no other
+   * collapse of the pass may touch it, and the next pass plans its edges again.
+   */
   private readonly touched: Uint8Array;
   /** The next scan plans every live edge, not only those the last pass touched. */
   private planEveryEdge = true;
