@@ -214,7 +214,7 @@ function cutStep(mesh: HalfedgeMesh, normal: number[], k: number, keep: 'above' 
 
 function decimateStep(mesh: HalfedgeMesh, share: number): Plan {
   const targetFaces = Math.max(1, Math.floor(share * mesh.nFaces));
-  return operationStep(mesh, `decimate to ${targetFaces} faces`, cannotDecimate(mesh, { targetFaces }), () => decimate(mesh, { targetFaces }));
+  return operationStep(mesh, `decimate to ${targetFaces} faces`, cannotDecimate(mesh, { targetFaces }), () => void decimate(mesh, { targetFaces }));
 }
 
 /**
