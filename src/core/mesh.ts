@@ -384,8 +384,13 @@ export class HalfedgeMesh {
    * Gives every live element the new id its map says (old id → new id), dropping the deleted
    * ones (-1), and shrinks the arrays to fit: `compact()` keeps the order, `spatialOrder` makes one.
    * The maps must send the live elements of each kind onto 0 … (live count − 1), once each.
+   * @throws InvalidInputError naming the first element whose new id is missing, out of range or
+   *   taken twice, or a map of the wrong length (nothing is changed).
    */
   renumber(maps: CompactionMaps): void {
+    checkRenumbering(maps.vertices, this.vertexSlots, this.nVertices, this.vDeleted, 'v');
+    checkRenumbering(maps.edges, this.edgeSlots, this.nEdges, this.eDeleted, 'e');
+    checkRenumbering(maps.faces, this.faceSlots, this.nFaces, this.fDeleted, 'f');
     const edge = maps.edges;
     const halfedge = new Int32Array(2 * this.edgeSlots);
     for (let e = 0; e < this.edgeSlots; e++) {
@@ -467,6 +472,22 @@ function grow<T extends Int32Array | Uint8Array>(array: T, capacity: number, use
   const next = new (array.constructor as new (n: number) => T)(capacity);
   next.set(array.subarray(0, used));
   return next;
+}
+
+/** Throws unless `map` gives each live slot (`deleted[i]` 0) its own new id in 0 … live − 1, and each deleted one -1. */
+function checkRenumbering(map: Int32Array, slots: number, live: number, deleted: Uint8Array, prefix: string): void {
+  if (map.length !== slots) throw new InvalidInputError(`renumber: the map of ${prefix} ids has ${map.length} entries for ${slots} slots`);
+  const taken = new Uint8Array(live);
+  for (let i = 0; i < slots; i++) {
+    const j = map[i];
+    if (deleted[i]) {
+      if (j !== -1) throw new InvalidInputError(`renumber: ${prefix}${i} is deleted, so its new id must be -1, not ${j}`);
+    } else if (!(j >= 0 && j < live)) {
+      throw new InvalidInputError(`renumber: ${prefix}${i}'s new id ${j} is not in 0…${live - 1}`);
+    } else if (taken[j]++) {
+      throw new InvalidInputError(`renumber: ${prefix}${i}'s new id ${j} is taken twice`);
+    }
+  }
 }
 
 function liveMap(slots: number, isLive: (i: number) => boolean): Int32Array {

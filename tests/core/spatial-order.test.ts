@@ -95,4 +95,24 @@ describe('renumber', () => {
     for (const spec of meshArrays) expect(mesh[spec.name]).toEqual(before[spec.name]);
     expect(mesh.positions).toEqual(before.positions);
   });
+
+  it('refuses maps that are not a renumbering, changing nothing', () => {
+    const { mesh } = buildMesh(torus(5, 4));
+    const before = mesh.clone();
+    const identity = (n: number) => Int32Array.from({ length: n }, (_, i) => i);
+    const maps = () => ({ vertices: identity(mesh.vertexSlots), edges: identity(mesh.edgeSlots), faces: identity(mesh.faceSlots) });
+    const twice = maps();
+    twice.edges[3] = 2;
+    expect(() => mesh.renumber(twice)).toThrow("renumber: e3's new id 2 is taken twice");
+    const outside = maps();
+    outside.faces[0] = mesh.faceSlots;
+    expect(() => mesh.renumber(outside)).toThrow(`renumber: f0's new id ${mesh.faceSlots} is not in 0…${mesh.faceSlots - 1}`);
+    expect(() => mesh.renumber({ ...maps(), vertices: identity(3) })).toThrow(`renumber: the map of v ids has 3 entries for ${mesh.vertexSlots} slots`);
+    for (const spec of meshArrays) expect(mesh[spec.name]).toEqual(before[spec.name]);
+    const gone = mesh.heVertex[1]; // collapsing e0 deletes the origin of its second halfedge
+    collapseEdge(mesh, 0);
+    expect(mesh.isVertexDeleted(gone)).toBe(true);
+    expect(() => mesh.renumber(maps())).toThrow(`renumber: v${gone} is deleted, so its new id must be -1, not ${gone}`);
+    expect(validate(mesh)).toEqual([]);
+  });
 });
