@@ -376,7 +376,7 @@ export class HalfedgeMesh {
       edges: liveMap(this.edgeSlots, (e) => this.eDeleted[e] === 0),
       faces: liveMap(this.faceSlots, (f) => this.fDeleted[f] === 0),
     };
-    this.renumber(maps);
+    this.applyRenumbering(maps);
     return maps;
   }
 
@@ -391,6 +391,11 @@ export class HalfedgeMesh {
     checkRenumbering(maps.vertices, this.vertexSlots, this.nVertices, this.vDeleted, 'v');
     checkRenumbering(maps.edges, this.edgeSlots, this.nEdges, this.eDeleted, 'e');
     checkRenumbering(maps.faces, this.faceSlots, this.nFaces, this.fDeleted, 'f');
+    this.applyRenumbering(maps);
+  }
+
+  /** `renumber` without the check, for maps made right by construction (`compact`). */
+  private applyRenumbering(maps: CompactionMaps): void {
     const edge = maps.edges;
     const halfedge = new Int32Array(2 * this.edgeSlots);
     for (let e = 0; e < this.edgeSlots; e++) {

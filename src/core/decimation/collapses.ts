@@ -77,8 +77,8 @@ export class Decimator {
   /** Largest mean squared distance a merged vertex may have from its original planes. */
   private readonly maxSquaredError: number;
   /** Collapses made, and refused by a check that a later collapse could change, since every edge was last planned. */
-  private collapsedSinceFill = 0;
-  private refusedSinceFill = 0;
+  private collapsedSinceReplan = 0;
+  private refusedSinceReplan = 0;
   /** True once no allowed collapse is left. */
   exhausted = false;
 
@@ -135,12 +135,12 @@ export class Decimator {
     touched.fill(0);
     if (this.planEveryEdge) {
       this.planEveryEdge = false;
-      this.collapsedSinceFill = 0;
-      this.refusedSinceFill = 0;
+      this.collapsedSinceReplan = 0;
+      this.refusedSinceReplan = 0;
     }
     // no edge allowed: once more with every edge, if a collapse may have freed a refused one
     if (candidates.counted === 0) {
-      if (this.collapsedSinceFill === 0 || this.refusedSinceFill === 0) this.exhausted = true;
+      if (this.collapsedSinceReplan === 0 || this.refusedSinceReplan === 0) this.exhausted = true;
       else this.planEveryEdge = true;
       return;
     }
@@ -175,7 +175,7 @@ export class Decimator {
       this.plan(e);
       if (canCollapseEdge(mesh, e) !== null || !keepsOrientation(mesh, e, point[0], point[1], point[2])) {
         costs[e] = Infinity;
-        this.refusedSinceFill++;
+        this.refusedSinceReplan++;
         // nothing changed at its ends: their other edges keep their plans
         touched[a] = 0;
         touched[b] = 0;
@@ -185,7 +185,7 @@ export class Decimator {
       collapseEdgeAt(w, e, point);
       for (let k = 0; k < QUADRIC_SIZE; k++) q[QUADRIC_SIZE * a + k] += q[QUADRIC_SIZE * b + k];
       this.onBoundary[a] |= this.onBoundary[b];
-      this.collapsedSinceFill++;
+      this.collapsedSinceReplan++;
       survivors?.push(a);
     }
   }
@@ -244,6 +244,7 @@ export class Decimator {
     // too far from the original surface?
     return this.bestCost > this.maxSquaredError * sum[AREA] ? Infinity : this.bestCost;
   }
+
   /** Keeps vertex `v`'s position in `point` when the summed quadric is smaller there. */
   private consider(v: number): void {
     const p = this.positions;

@@ -138,7 +138,7 @@ function* decimationPhases(mesh: HalfedgeMesh, settings: DecimationSettings, lis
     yield {
       name: `collapse ${before - mesh.nFaces} faces (${mesh.nFaces} left)`,
       explanation:
-        'The cheapest edges collapse, many at once but no two sharing a vertex, each merging its two ends into one vertex at its best point; the survivor sums both quadrics, and the edges around it get new costs for the next round. ' +
+        'The cheapest edges collapse, no two sharing a vertex, each merging its two ends into one vertex at its best point; the survivor sums both quadrics, and the edges around it get new costs. ' +
         'A collapse that would make the surface non-manifold (the link condition) or turn a triangle over is skipped, so the mesh stays a valid surface.',
       ...(survivors ? batchIds(mesh, removed, survivors, decimator) : {}),
     };
