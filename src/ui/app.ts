@@ -19,7 +19,7 @@ import {
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
-import type { EditRequest, OpenOptions, OperationRequest } from '../workers/protocol.js';
+import type { OpenOptions, StudentVerb, VerbArguments } from '../workers/protocol.js';
 import { byId, el, replace } from './dom.js';
 import { combineHighlights, hoverHighlight, phaseHighlight, problemHighlight, quizHighlight, selectionHighlight } from './highlights.js';
 import { renderExport } from './panels/export.js';
@@ -180,18 +180,18 @@ export class App {
       },
     );
     this.operations = new OperationsPanel(this.byId('operations'), {
-      start: (request) => void this.start(request),
-      edit: (request) => void this.edit(request),
+      start: (request) => void this.request('start', request),
+      edit: (request) => void this.request('edit', request),
       showPlane: (plane) => this.showPlane(plane),
       setPlaneMode: (mode) => this.gizmo.setMode(mode),
     });
     this.stepper = new StepperPanel(this.byId('stepper'), {
-      step: () => void this.step(),
-      runToEnd: () => void this.runToEnd(),
-      cancel: () => void this.cancel(),
+      step: () => void this.request('step'),
+      runToEnd: () => void this.request('runToEnd'),
+      cancel: () => void this.request('cancel'),
       select: (s) => this.select(s),
     });
-    this.history = new HistoryPanel(this.byId('history'), { undo: () => void this.undo(), redo: () => void this.redo(), jump: (i) => void this.jump(i) });
+    this.history = new HistoryPanel(this.byId('history'), { undo: () => void this.request('undo'), redo: () => void this.request('redo'), jump: (i) => void this.request('jump', i) });
     renderExport(this.byId('export'), {
       meshBytes: (format) => this.client.exportMesh(format),
       tablesJson: () => (this.mesh ? JSON.stringify(meshToHalfedgeJSON(this.mesh)) : '{}'),
@@ -379,29 +379,13 @@ export class App {
     }
   }
 
-  start(request: OperationRequest) {
-    return this.run(() => this.client.start(request));
-  }
-  step() {
-    return this.run(() => this.client.step());
-  }
-  runToEnd() {
-    return this.run(() => this.client.runToEnd());
-  }
-  cancel() {
-    return this.run(() => this.client.cancel());
-  }
-  edit(request: EditRequest) {
-    return this.run(() => this.client.edit(request));
-  }
-  undo() {
-    return this.moveInHistory(() => this.client.undo());
-  }
-  redo() {
-    return this.moveInHistory(() => this.client.redo());
-  }
-  jump(index: number) {
-    return this.moveInHistory(() => this.client.jump(index));
+  /**
+   * Asks the session for one of the student's verbs (the table in protocol.ts) and shows the
+   * answer; after undo, redo or a jump, says where in the history the view now is.
+   */
+  request<V extends StudentVerb>(verb: V, ...args: VerbArguments<V>): Promise<Snapshot | null> {
+    const ask = () => (this.client[verb] as (...args: unknown[]) => Promise<Snapshot | null>)(...args);
+    return verb === 'undo' || verb === 'redo' || verb === 'jump' ? this.moveInHistory(ask) : this.run(ask);
   }
 
   /** Undo, redo or a jump, saying where in the history (and which model) the view now is. */
@@ -423,8 +407,8 @@ export class App {
     for (const [i, step] of steps.entries()) {
       const done =
         step.kind === 'edit'
-          ? await this.edit(step.request)
-          : (await this.start(step.request)) && (await this.runToEnd());
+          ? await this.request('edit', step.request)
+          : (await this.request('start', step.request)) && (await this.request('runToEnd'));
       if (!done) {
         this.say(`This link's step ${i + 1} of ${steps.length} could not be replayed: ${this.message}`, 'alert');
         return false;
@@ -962,7 +946,7 @@ export class App {
     this.byId('show-ids').addEventListener('click', () => this.toggleIds());
     this.byId('tables-fold').addEventListener('click', () => this.showTables(!this.tablesShown));
     this.byId('walk-back').addEventListener('click', () => this.back());
-    this.byId('cancel').addEventListener('click', () => void this.cancel());
+    this.byId('cancel').addEventListener('click', () => void this.request('cancel'));
     this.byId('presentation').addEventListener('click', () => this.setPresentation(this.scale === 1));
     this.byId('share').addEventListener('click', () => this.shareLink());
     this.byId('help').addEventListener('click', () => this.toggleHelp());

@@ -5,7 +5,7 @@
  */
 import type { PageSnapshot } from '../workers/page-copy.js';
 import { type HalfedgeMesh, meshArrays } from '../core/index.js';
-import type { EditRequest, OperationRequest } from '../workers/protocol.js';
+import { type Snapshot, type SnapshotVerbs, type StudentVerb, studentVerbNames } from '../workers/protocol.js';
 import type { App } from './app.js';
 import { recordOf } from './records.js';
 import { type ElementKind, elementName, type Move, parseElementName, type Selection } from './selection.js';
@@ -79,14 +79,11 @@ export function automation(app: App) {
     /** Marks the seams (edges where the file split its vertices; the File tab's button) or clears them; resolves to how many were marked. */
     showSeams: (on: boolean) => app.toggleSeams(on),
     setPresentation: (on: boolean) => app.setPresentation(on),
-    start: (request: OperationRequest) => app.start(request).then(summary),
-    step: () => app.step().then(summary),
-    runToEnd: () => app.runToEnd().then(summary),
-    cancel: () => app.cancel().then(summary),
-    edit: (request: EditRequest) => app.edit(request).then(summary),
-    undo: () => app.undo().then(summary),
-    redo: () => app.redo().then(summary),
-    jump: (index: number) => app.jump(index).then(summary),
+    /** The student's verbs (protocol.ts): `start(request)`, `step()`, `runToEnd()`, `cancel()`, `edit(request)`, `undo()`, `redo()`, `jump(index)`; each resolves to `{ version }`, or null when refused (the page says why). */
+    ...(Object.fromEntries(studentVerbNames.map((verb) => [verb, (...args: unknown[]) => (app.request as (verb: StudentVerb, ...args: unknown[]) => Promise<Snapshot | null>)(verb, ...args).then(summary)])) as SnapshotVerbs<
+      Promise<{ version: number } | null>,
+      StudentVerb
+    >),
     /** The link "Copy link" copies (and copies it): the sample, the steps since it, the selection, the camera. */
     shareLink: () => app.shareLink(),
     /** The quiz: `ask()` a new question; `question()` the current one, with its answer (for tests). */

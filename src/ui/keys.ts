@@ -30,10 +30,10 @@ export const keyBindings: KeyBinding[] = [
   {
     keys: ['s', 'g', 'x'],
     help: 'step the operation / run it to the end / cancel it',
-    run: (app, key) => void (key === 's' ? app.step() : key === 'g' ? app.runToEnd() : app.cancel()),
+    run: (app, key) => void app.request(key === 's' ? 'step' : key === 'g' ? 'runToEnd' : 'cancel'),
   },
-  { keys: ['ctrl+z', 'ctrl+y'], help: 'undo / redo (also ctrl+shift+z)', run: (app, key) => void (key === 'ctrl+z' ? app.undo() : app.redo()) },
-  { keys: ['ctrl+shift+z'], help: '', run: (app) => void app.redo() },
+  { keys: ['ctrl+z', 'ctrl+y'], help: 'undo / redo (also ctrl+shift+z)', run: (app, key) => void app.request(key === 'ctrl+z' ? 'undo' : 'redo') },
+  { keys: ['ctrl+shift+z'], help: '', run: (app) => void app.request('redo') },
   {
     keys: ['q'],
     help: 'a new quiz question',

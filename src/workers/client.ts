@@ -13,19 +13,21 @@
  *   const snapshot = await client.open(new Uint8Array(await file.arrayBuffer()), file.name);
  */
 import { proxy, type Remote, transfer, wrap } from 'comlink';
-import { meshFingerprint, type PointerDiff, type SerializedMesh, serializeMesh } from '../core/index.js';
+import { meshFingerprint, serializeMesh } from '../core/index.js';
 import { PageCopy, type PageSnapshot } from './page-copy.js';
 import {
-  type EditRequest,
   installErrorTransfer,
   type LoaderApi,
   type OpenOptions,
-  type OperationRequest,
   type ProgressEvent,
   type SessionApi,
   type Snapshot,
   type SnapshotDetails,
+  type SnapshotVerb,
+  snapshotVerbNames,
+  type SnapshotVerbs,
   transferables,
+  type VerbArguments,
 } from './protocol.js';
 
 installErrorTransfer();
@@ -105,33 +107,17 @@ export class SessionClient {
       this.stopLoading(new CancelledError('loading cancelled'));
       return null;
     }
-    return this.call((session) => session.cancel());
+    return this.request('cancel');
   }
 
-  snapshot(): Promise<PageSnapshot> {
-    return this.call((session) => session.snapshot());
+  /**
+   * Asks the session for one of its verbs (the table in protocol.ts; each is also a method of this
+   * client: `client.step()` is `client.request('step')`), answering with the page's copy.
+   */
+  request<V extends ClientVerb>(verb: V, ...args: VerbArguments<V>): Promise<PageSnapshot> {
+    return this.call((session) => (session[verb] as (...args: unknown[]) => Promise<Snapshot>)(...args));
   }
-  start(request: OperationRequest): Promise<PageSnapshot> {
-    return this.call((session) => session.start(request));
-  }
-  step(): Promise<PageSnapshot> {
-    return this.call((session) => session.step());
-  }
-  runToEnd(): Promise<PageSnapshot> {
-    return this.call((session) => session.runToEnd());
-  }
-  edit(request: EditRequest): Promise<PageSnapshot> {
-    return this.call((session) => session.edit(request));
-  }
-  undo(): Promise<PageSnapshot> {
-    return this.call((session) => session.undo());
-  }
-  redo(): Promise<PageSnapshot> {
-    return this.call((session) => session.redo());
-  }
-  jump(index: number): Promise<PageSnapshot> {
-    return this.call((session) => session.jump(index));
-  }
+
   /** The full counts and checks of the last snapshot (after a patched one). */
   details(): Promise<SnapshotDetails> {
     return Promise.race([this.session.remote.details(), this.session.stopped]);
@@ -149,16 +135,6 @@ export class SessionClient {
   exportMesh(format: string): Promise<Uint8Array> {
     return Promise.race([this.session.remote.exportMesh(format), this.session.stopped]);
   }
-  /** Puts back a mesh (e.g. the page's own copy) as a new history entry. */
-  restore(mesh: SerializedMesh, label: string): Promise<PageSnapshot> {
-    return this.call((session) => session.restore(mesh, label));
-  }
-
-  /** Shows a state of a practice run (see `SessionApi.practice`). */
-  practice(mesh: SerializedMesh, label: string, diff: PointerDiff | null): Promise<PageSnapshot> {
-    return this.call((session) => session.practice(mesh, label, diff));
-  }
-
   /** Stops the session worker as if it had crashed (for tests of the recovery). */
   simulateCrash(): void {
     this.session.stop(new WorkerStoppedError('the worker was stopped'));
@@ -198,7 +174,7 @@ export class SessionClient {
     this.session = this.startSession();
     // sent as a copy: the page keeps drawing from its own arrays
     const mesh = this.copy.mesh ? serializeMesh(this.copy.mesh) : null;
-    const snapshot = mesh ? await this.call((session) => session.restore(mesh, 'restored after a restart')) : null;
+    const snapshot = mesh ? await this.request('restore', mesh, 'restored after a restart') : null;
     this.onRestart?.(`${reason}; restarted${snapshot ? ' with the last good mesh' : ''}`, snapshot);
   }
 
@@ -208,6 +184,18 @@ export class SessionClient {
     this.loader.worker.terminate();
     this.loader = null;
   }
+}
+
+/** The verbs of the table as methods; `adopt` is `open`'s, and `cancel` also stops a load. */
+type ClientVerb = Exclude<SnapshotVerb, 'adopt'>;
+export interface SessionClient extends SnapshotVerbs<Promise<PageSnapshot>, Exclude<ClientVerb, 'cancel'>> {}
+for (const verb of snapshotVerbNames) {
+  if (verb === 'adopt' || Object.hasOwn(SessionClient.prototype, verb)) continue;
+  Object.defineProperty(SessionClient.prototype, verb, {
+    value(this: SessionClient, ...args: unknown[]) {
+      return (this.request as (verb: ClientVerb, ...args: unknown[]) => Promise<PageSnapshot>)(verb, ...args);
+    },
+  });
 }
 
 function live<T>(worker: Worker, stoppedError: () => Error): LiveWorker<T> {

@@ -192,24 +192,57 @@ export interface ProgressEvent {
 
 export type ProgressListener = (event: ProgressEvent) => void;
 
-/** The session worker's methods, as the page sees them (every call is asynchronous). */
-export interface SessionApi {
-  adopt(loaded: LoadedFile, sample: string | null): Promise<Snapshot>;
+/** The type of a verb's arguments, carried by the table (the value itself is empty). */
+interface Arguments<A extends unknown[]> {
+  readonly arguments?: A;
+}
+const takes = <A extends unknown[]>(): Arguments<A> => ({});
+
+/**
+ * The verbs a student can use, by clicking or through `window.halfedgeLab`: each changes the mesh
+ * on screen (or the operation being stepped) and answers with a snapshot.
+ */
+export const studentVerbs = {
+  start: takes<[request: OperationRequest]>(),
+  step: takes<[]>(),
+  runToEnd: takes<[]>(),
+  cancel: takes<[]>(),
+  edit: takes<[request: EditRequest]>(),
+  undo: takes<[]>(),
+  redo: takes<[]>(),
+  jump: takes<[index: number]>(),
+};
+
+/**
+ * Every verb of the session that answers with a snapshot, listed once: `EditingSession` has each as
+ * a method, the worker exposes each (transferring the snapshot), `SessionClient` has each but
+ * `adopt` (which its `open` calls) answering with the page's copy, and `window.halfedgeLab` and the
+ * app have the student's.
+ */
+export const snapshotVerbs = {
+  ...studentVerbs,
+  /** Makes a parsed file the current mesh; `sample` names the sample model it is. */
+  adopt: takes<[loaded: LoadedFile, sample?: string | null]>(),
   /** Puts back a mesh the page kept (after the worker had to be restarted). */
-  restore(mesh: SerializedMesh, label: string): Promise<Snapshot>;
+  restore: takes<[mesh: SerializedMesh, label: string]>(),
   /** Shows a state of a practice run, with the write that led to it as the diff; replaces the practice state shown before. */
-  practice(mesh: SerializedMesh, label: string, diff: PointerDiff | null): Promise<Snapshot>;
-  snapshot(): Promise<Snapshot>;
+  practice: takes<[mesh: SerializedMesh, label: string, diff: PointerDiff | null]>(),
+  /** The current snapshot, with the whole mesh. */
+  snapshot: takes<[]>(),
+};
+
+export type SnapshotVerb = keyof typeof snapshotVerbs;
+export type StudentVerb = keyof typeof studentVerbs;
+export type VerbArguments<V extends SnapshotVerb> = NonNullable<(typeof snapshotVerbs)[V]['arguments']>;
+/** The verbs as methods answering `R`. */
+export type SnapshotVerbs<R, V extends SnapshotVerb = SnapshotVerb> = { [K in V]: (...args: VerbArguments<K>) => R };
+export const snapshotVerbNames = Object.keys(snapshotVerbs) as SnapshotVerb[];
+export const studentVerbNames = Object.keys(studentVerbs) as StudentVerb[];
+
+/** The session worker's methods, as the page sees them (every call is asynchronous). */
+export interface SessionApi extends SnapshotVerbs<Promise<Snapshot>> {
   /** The full counts and checks of the current mesh (after a patched snapshot). */
   details(): Promise<SnapshotDetails>;
-  start(request: OperationRequest): Promise<Snapshot>;
-  step(): Promise<Snapshot>;
-  runToEnd(): Promise<Snapshot>;
-  cancel(): Promise<Snapshot>;
-  edit(request: EditRequest): Promise<Snapshot>;
-  undo(): Promise<Snapshot>;
-  redo(): Promise<Snapshot>;
-  jump(index: number): Promise<Snapshot>;
   exportMesh(format: string): Promise<Uint8Array>;
   /** The fingerprint of the mesh of the last snapshot (`meshFingerprint`), to check the page's copy. */
   fingerprint(): Promise<string>;

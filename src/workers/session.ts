@@ -35,7 +35,7 @@ import {
 import { type WriteFormat, writeMeshAsync } from '../core/io/index.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
 import { EDIT_ROOM, History } from './history.js';
-import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails } from './protocol.js';
+import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails, SnapshotVerbs } from './protocol.js';
 import { RenderLayout } from './render.js';
 import { fullDetails, patchedDetails } from './snapshot.js';
 
@@ -67,7 +67,7 @@ interface Stepping {
 /** Pointer changes a phase's diff lists (all are counted). */
 const DIFF_LIMIT = 1000;
 
-export class EditingSession {
+export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot>> {
   private readonly history = new History<EntryInfo>();
   private stepping: Stepping | null = null;
   private cancelRequested = false;
