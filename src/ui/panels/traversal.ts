@@ -21,12 +21,39 @@ interface TraversalStep {
 
 export interface Traversal {
   title: string;
+  /** The code shown, line by line: the source of the function the traversal runs. */
   code: string[];
-  /** Builds the steps from the selection, or says why it cannot start. */
-  /** The steps from the selection; a selected halfedge stands for the vertex the naming names. */
+  /** The steps from the selection, or why it cannot start; a selected halfedge stands for the vertex the naming names. */
   steps(mesh: HalfedgeMesh, selection: Selection, convention: Convention): TraversalStep[] | string;
   /** Kind of element `visit` collects. */
   visits: 'halfedge' | 'face';
+}
+
+/** The part of the mesh's API the traversals' code calls. */
+type Navigation = Pick<HalfedgeMesh, 'faceHalfedge' | 'vertexHalfedge' | 'next' | 'prev' | 'twin' | 'face'>;
+
+/*
+ * The code each traversal shows is the code it runs: these two functions, whose source a test
+ * compares with the lines shown. They run on a stand-in for the mesh that notes every pointer read
+ * (and gives up after a bound, on a mesh whose loop does not close), and the steps played are
+ * what the run did.
+ */
+function halfedgesOfFace(mesh: Navigation, f: number, visit: (h: number) => void): void {
+  const start = mesh.faceHalfedge(f);
+  let h = start;
+  do {
+    visit(h);
+    h = mesh.next(h);
+  } while (h !== start);
+}
+
+function facesAroundVertex(mesh: Navigation, v: number, visit: (f: number) => void): void {
+  const start = mesh.vertexHalfedge(v);
+  let h = start;
+  do {
+    visit(mesh.face(h)); // -1: the hole beside a boundary vertex
+    h = mesh.twin(mesh.prev(h)); // counter-clockwise
+  } while (h !== start);
 }
 
 const faceLoop: Traversal = {
@@ -41,10 +68,9 @@ const faceLoop: Traversal = {
     '} while (h !== start);',
   ],
   steps(mesh, selection) {
-    const f = selection.kind === 'face' ? selection.id : selection.kind === 'halfedge' ? mesh.heFace[selection.id] : -1;
+    const f = selection.kind === 'face' ? selection.id : selection.kind === 'halfedge' ? mesh.face(selection.id) : -1;
     if (f < 0) return 'select a face (or a halfedge of one) first';
-    const start = mesh.fHalfedge[f];
-    return loopSteps(start, (h) => mesh.heNext[h], (h) => h, mesh.halfedgeSlots);
+    return recordRun(mesh, (navigation, visit) => halfedgesOfFace(navigation, f, visit));
   },
 };
 
@@ -60,32 +86,75 @@ const vertexFan: Traversal = {
     '} while (h !== start);',
   ],
   steps(mesh, selection, convention) {
-    const named = (h: number) => (convention === 'origin' ? mesh.heVertex[h] : mesh.heVertex[mesh.heNext[h]]);
+    const named = (h: number) => (convention === 'origin' ? mesh.origin(h) : mesh.target(h));
     const v = selection.kind === 'vertex' ? selection.id : selection.kind === 'halfedge' ? named(selection.id) : -1;
     if (v < 0) return `select a vertex (or a halfedge ${convention === 'origin' ? 'leaving' : 'arriving at'} one) first`;
-    const start = mesh.vHalfedge[v];
-    if (start < 0) return `v${v} is isolated: no faces around it`;
-    return loopSteps(start, (h) => mesh.hePrev[h] ^ 1, (h) => mesh.heFace[h], mesh.halfedgeSlots);
+    if (mesh.vertexHalfedge(v) < 0) return `v${v} is isolated: no faces around it`;
+    return recordRun(mesh, (navigation, visit) => facesAroundVertex(navigation, v, visit));
   },
 };
 
 export const traversals = [faceLoop, vertexFan];
+/** The functions the traversals run, in the order of `traversals` (for the test that their source is the code shown). */
+export const traversalCode = [halfedgesOfFace, facesAroundVertex];
 
-/** The steps of `let h = start; do { visit(h); h = advance(h); } while (h !== start)`. */
-function loopSteps(start: number, advance: (h: number) => number, visit: (h: number) => number, limit: number): TraversalStep[] {
+/** The run read more pointers than a closing loop could: the mesh's loop does not close. */
+class Unclosed extends Error {}
+
+/**
+ * Runs a traversal's code on a stand-in for `mesh` and turns what it did into the steps played:
+ * the start read (lines 0 and 1), each visit (lines 2 and 3), each move of `h` (line 4: a move
+ * may read several pointers) and the loop's test (line 5).
+ */
+function recordRun(mesh: HalfedgeMesh, run: (navigation: Navigation, visit: (id: number) => void) => void): TraversalStep[] | string {
   const steps: TraversalStep[] = [];
   const visited: number[] = [];
-  steps.push({ line: 0, h: start, visited: [], done: false }, { line: 1, h: start, visited: [], done: false });
-  let h = start;
-  for (let i = 0; i <= limit; i++) {
+  let start = -1;
+  let h = -1;
+  let moving = false;
+  let reads = 0;
+  const read = (value: number) => {
+    if (++reads > 3 * mesh.halfedgeSlots + 4) throw new Unclosed();
+    return value;
+  };
+  const begin = (value: number) => {
+    start = h = read(value);
+    steps.push({ line: 0, h, visited: [], done: false }, { line: 1, h, visited: [], done: false });
+    return value;
+  };
+  const move = (value: number) => {
+    moving = true;
+    h = read(value);
+    return value;
+  };
+  /** Ends the move being made: `h` holds where it led, and the loop tests it. */
+  const endMove = () => {
+    if (!moving) return;
+    moving = false;
+    steps.push({ line: 4, h, visited: [...visited], done: false }, { line: 5, h, visited: [...visited], done: h === start });
+  };
+  const navigation: Navigation = {
+    faceHalfedge: (f) => begin(mesh.faceHalfedge(f)),
+    vertexHalfedge: (v) => begin(mesh.vertexHalfedge(v)),
+    next: (g) => move(mesh.next(g)),
+    prev: (g) => move(mesh.prev(g)),
+    twin: (g) => move(mesh.twin(g)),
+    // a face read to visit it is not a move of h
+    face: (g) => read(mesh.face(g)),
+  };
+  const visit = (id: number) => {
+    endMove();
     steps.push({ line: 2, h, visited: [...visited], done: false });
-    visited.push(visit(h));
+    visited.push(id);
     steps.push({ line: 3, h, visited: [...visited], done: false });
-    h = advance(h);
-    steps.push({ line: 4, h, visited: [...visited], done: false });
-    steps.push({ line: 5, h, visited: [...visited], done: h === start });
-    if (h === start) break;
+  };
+  try {
+    run(navigation, visit);
+  } catch (error) {
+    if (!(error instanceof Unclosed)) throw error;
+    return `the loop from h${start} did not come back to it within ${reads} pointer reads: the mesh's pointers are broken here`;
   }
+  endMove();
   return steps;
 }
 
