@@ -15,8 +15,8 @@
 import { BufferAttribute, BufferGeometry } from 'three';
 import { LoopSubdivision } from 'three-subdivide';
 import { type BenchCase, PreparedCopies } from '../harness.js';
-import { buildMesh, type HalfedgeMesh, torus } from '../../src/index.js';
-import { subdivide, type SubdivisionScheme } from '../../src/core/subdivision/index.js';
+import { buildMesh, torus } from '../../src/index.js';
+import { subdivide } from '../../src/core/subdivision/index.js';
 import { sphereFaceCount, sphereWithFaces } from './build.js';
 
 const peerFaceLimit = 200_000;

@@ -82,7 +82,6 @@ export function readOff(bytes: Uint8Array, progress: Progress): MeshFile {
 
   // the keyword
   const keywordAt = scanner.pos;
-  const keywordLocation = scanner.location();
   const word = scanner.word();
   const match = KEYWORD.exec(word);
   const shape: OffShape = {
