@@ -3,25 +3,15 @@
  * (camera, selection, the path walked, which table is open). Every change to the mesh is asked of
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
-import { Box3, Vector3 } from 'three';
-import {
-  faceCentroid,
-  faceVectorArea,
-  faceVertices,
-  type HalfedgeMesh,
-  type PointerDiff,
-  type SerializedMesh,
-  meshToHalfedgeJSON,
-  type Repair,
-  type RepairIncident,
-  vertexAdjacentFaces,
-} from '../core/index.js';
+import { Vector3 } from 'three';
+import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident } from '../core/index.js';
 import { colors } from './colors.js';
 import { CancelledError, SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import type { OpenOptions, StudentVerb, VerbArguments } from '../workers/protocol.js';
 import { byId, el, replace } from './dom.js';
-import { combineHighlights, hoverHighlight, phaseHighlight, problemHighlight, quizHighlight, selectionHighlight } from './highlights.js';
+import { hoverHighlight, idLabels, phaseHighlight, problemHighlight, quizHighlight } from './highlights.js';
+import { meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
 import { incidentTarget, renderFileInfo } from './panels/file-info.js';
 import { renderHelp } from './panels/help.js';
@@ -44,9 +34,10 @@ import { PlaneGizmo } from './scene/plane-gizmo.js';
 import { SurfaceLayer } from './scene/surface.js';
 import { Viewer } from './scene/viewer.js';
 import { handleKey } from './keys.js';
-import { elementName, exists, isMove, type Move, type Selection, walk, type WalkStep } from './selection.js';
+import { Inspection } from './inspection.js';
+import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
 import { isRight } from './quiz.js';
-import { encodeViewState, type ReplayStep, type ViewState } from './share.js';
+import { encodeViewState, openedEntry, type ReplayStep, replayable, type ViewState } from './share.js';
 import type { PanelName } from './embed.js';
 
 export interface SampleModel {
@@ -89,10 +80,8 @@ export class App {
   readonly viewer: Viewer;
   snapshot: Snapshot | null = null;
   mesh: HalfedgeMesh | null = null;
-  selection: Selection | null = null;
-  hovered: Selection | null = null;
-  path: WalkStep[] = [];
-  convention: Convention = 'origin';
+  /** The selection, the walk, the hover, the naming and the marks: what the student is looking at. */
+  readonly inspection = new Inspection();
   filter: PickFilter = 'auto';
   /** Larger arrows, dots and type in presentation mode. */
   scale = 1;
@@ -130,14 +119,6 @@ export class App {
   /** The Practice tab, loaded with its editor and grader when first asked for (see `practice()`). */
   private practicePanel: Promise<PracticePanel> | null = null;
   private readonly gizmo: PlaneGizmo;
-  private quizSpec: HighlightSpec | null = null;
-  /** A repair from the build report being shown (cleared by the next selection). */
-  private problemSpec: HighlightSpec | null = null;
-  /** The seams of a file with per-corner values, while the File tab shows them (see `toggleSeams`). */
-  private seamSpec: HighlightSpec | null = null;
-  /** What the Practice tab marks on the state of a run it shows (the last writes, or the reads so far). */
-  private practiceSpec: HighlightSpec | null = null;
-  private traversalSpec: HighlightSpec | null = null;
   private markReady!: () => void;
   private readonly root: Document | ShadowRoot;
   private readonly frame: HTMLElement;
@@ -173,9 +154,9 @@ export class App {
     this.tables = new RecordTables(this.byId('tables'), (s) => this.selectInSight(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
       this.byId('traversal'),
-      () => ({ mesh: this.mesh, selection: this.selection, convention: this.convention }),
+      () => ({ mesh: this.mesh, selection: this.inspection.selection, convention: this.inspection.convention }),
       (spec) => {
-        this.traversalSpec = spec;
+        this.inspection.marks.traversal = spec;
         this.drawSelection();
       },
     );
@@ -200,15 +181,15 @@ export class App {
     });
     this.quiz = new QuizPanel(this.byId('quiz'), {
       mesh: () => this.mesh,
-      convention: () => this.convention,
+      convention: () => this.inspection.convention,
       showPath: (question, picked) => {
-        this.quizSpec = question && this.mesh ? quizHighlight(this.mesh, question.path, picked, picked !== null && isRight(question, picked)) : null;
+        this.inspection.marks.quiz = question && this.mesh ? quizHighlight(this.mesh, question.path, picked, picked !== null && isRight(question, picked)) : null;
         this.drawSelection();
       },
     });
     this.drawLegend();
     renderHelp(this.byId('help-keys'));
-    renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), this.convention);
+    renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), this.inspection.convention);
     this.wireControls();
     if (this.panels) this.embed(this.panels);
     this.drawPanels();
@@ -250,7 +231,7 @@ export class App {
       showState: async (mesh: SerializedMesh, label: string, diff: PointerDiff | null, frame: boolean, marks: HighlightSpec | null) => {
         try {
           this.show(await this.client.practice(mesh, label, diff), frame);
-          this.practiceSpec = marks;
+          this.inspection.marks.practice = marks;
           this.drawSelection();
           this.say(`${label[0].toUpperCase()}${label.slice(1)}.`);
         } catch (error) {
@@ -263,7 +244,7 @@ export class App {
         // only on the state the panel showed: after an undo or an opened file the ids mean other elements
         const history = this.snapshot?.history;
         if (history?.items[history.index]?.source.kind !== 'practice') return false;
-        this.practiceSpec = marks;
+        this.inspection.marks.practice = marks;
         this.drawSelection();
         return true;
       },
@@ -433,16 +414,8 @@ export class App {
     // while stepping, a phase may colour the vertices by a value it computed
     const values = snapshot.stepping ? (snapshot.phase?.values?.vertices ?? null) : null;
     renderValuesLegend(this.byId('values-legend'), this.surface.setVertexValues(values), `${snapshot.phase?.name ?? ''}: colour by value`);
-    if (this.selection && !exists(mesh, this.selection)) this.selection = null;
-    if (this.hovered && !exists(mesh, this.hovered)) this.hovered = null;
-    this.path = this.path.filter((step) => exists(mesh, step.to));
-    this.problemSpec = null;
-    this.practiceSpec = null;
-    // edge ids name other edges after a change: the seams are asked for again
-    this.seamSpec = null;
+    this.inspection.meshChanged(mesh, frame);
     if (frame) {
-      this.selection = null;
-      this.path = [];
       this.traversal.stop();
       const planar = snapshot.render.planeNormal !== null;
       this.viewer.setMode(planar ? 'top' : 'perspective');
@@ -451,7 +424,7 @@ export class App {
     }
     // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
     void this.refreshArrows(snapshot.renderPatch !== null);
-    this.tables.setMesh(mesh, this.convention);
+    this.tables.setMesh(mesh, this.inspection.convention);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
     this.frame.classList.toggle('stepping', snapshot.stepping !== null);
@@ -467,7 +440,7 @@ export class App {
     // a question on a changed mesh is asked again (its ids may be gone); a new model, or an
     // answered question's path on a changed mesh, leaves the view
     if (this.quiz.active && !frame) this.quiz.ask();
-    else if (this.quizSpec) this.quiz.end();
+    else if (this.inspection.marks.quiz) this.quiz.end();
     this.drawSelection();
     this.drawPanels();
     this.markReady();
@@ -489,14 +462,8 @@ export class App {
   }
 
   frameMesh(): void {
-    const mesh = this.mesh;
-    if (!mesh) return;
-    const box = new Box3();
-    const p = mesh.positions;
-    for (const v of mesh.vertices()) box.expandByPoint(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2]));
-    const centre = box.getCenter(new Vector3());
-    let radius = 0;
-    for (const v of mesh.vertices()) radius = Math.max(radius, centre.distanceTo(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2])));
+    if (!this.mesh) return;
+    const { box, radius } = meshBounds(this.mesh);
     this.viewer.frame(box, this.viewNormal(), radius);
   }
 
@@ -505,23 +472,14 @@ export class App {
    * seen from the side its faces face.
    */
   frameSelection(): void {
-    if (this.selection) this.frameAround(this.selection);
+    if (this.inspection.selection) this.frameAround(this.inspection.selection);
   }
 
   /** Brings an element and the faces around it to fill most of the view, seen from their front. */
   private frameAround(s: Selection): void {
     const mesh = this.mesh;
     if (!mesh || !exists(mesh, s)) return;
-    const points = neighbourhoodPoints(mesh, s);
-    const spec = selectionHighlight(mesh, s, this.convention);
-    for (const { id } of spec.vertices) points.push(new Vector3(...mesh.position(id)));
-    for (const { id } of spec.halfedges) {
-      points.push(new Vector3(...mesh.position(mesh.heVertex[id])), new Vector3(...mesh.position(mesh.heVertex[mesh.heNext[id]])));
-    }
-    const box = new Box3().setFromPoints(points);
-    const centre = box.getCenter(new Vector3());
-    // a sphere around the points, with a margin for the arrows and labels at the rim
-    const radius = 1.1 * Math.max(1e-9, ...points.map((p) => p.distanceTo(centre)));
+    const { box, radius } = selectionBounds(mesh, s, this.inspection.convention);
     // close up, an element facing away would be seen from inside the surface: look at its front
     const facing = selectionFacing(mesh, s);
     const direction = this.viewer.camera.position.clone().sub(this.viewer.controls.target);
@@ -575,8 +533,8 @@ export class App {
     return {
       model,
       steps,
-      selection: this.selection,
-      naming: this.convention,
+      selection: this.inspection.selection,
+      naming: this.inspection.convention,
       camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom },
       mode: this.viewer.mode,
     };
@@ -617,7 +575,7 @@ export class App {
   }
 
   showTab(name: Tab): void {
-    if (name !== 'quiz' && this.quizSpec) this.quiz.end();
+    if (name !== 'quiz' && this.inspection.marks.quiz) this.quiz.end();
     // the editor is loaded when the tab is first opened
     if (name === 'practice') void this.practice().then((panel) => panel.open());
     if (this.panels) return; // an embed shows its panels side by side, without tabs
@@ -632,15 +590,13 @@ export class App {
 
   /** Selects an element; a new selection starts a new walk. */
   select(selection: Selection | null): void {
-    if (selection && this.mesh && !exists(this.mesh, selection)) {
-      this.say(`${elementName(selection)} does not exist in this mesh.`, 'alert');
+    const refused = this.inspection.select(this.mesh, selection);
+    if (refused) {
+      this.say(refused, 'alert');
       return;
     }
-    this.selection = selection;
-    this.path = selection ? [{ move: null, to: selection }] : [];
-    this.problemSpec = null;
     // a selection (or Esc) ends the quiz's drawing, which would otherwise hide the selection's
-    if (this.quizSpec) this.quiz.end();
+    if (this.inspection.marks.quiz) this.quiz.end();
     this.afterSelect();
   }
 
@@ -697,13 +653,13 @@ export class App {
   showProblem(incident: RepairIncident, kind: string, first: Selection): void {
     if (!this.mesh) return;
     this.select(first);
-    this.problemSpec = problemHighlight(this.mesh, incident, kind);
+    this.inspection.marks.problem = problemHighlight(this.mesh, incident, kind);
     this.say(incident.message);
     this.drawSelection();
   }
 
   get seamsShown(): boolean {
-    return this.seamSpec !== null;
+    return this.inspection.marks.seams !== null;
   }
 
   /**
@@ -712,7 +668,7 @@ export class App {
    */
   async toggleSeams(show = !this.seamsShown): Promise<number> {
     if (!show || !this.mesh) {
-      this.seamSpec = null;
+      this.inspection.marks.seams = null;
       this.drawSelection();
       this.drawPanels();
       return 0;
@@ -720,7 +676,7 @@ export class App {
     const version = this.shown.version;
     const edges = await this.client.seams();
     if (this.shown.version !== version) return 0; // the mesh changed meanwhile: those ids are not its edges
-    this.seamSpec = { ...emptyHighlight(), edges: [...edges].map((id) => ({ id, color: colors.seam })) };
+    this.inspection.marks.seams = { ...emptyHighlight(), edges: [...edges].map((id) => ({ id, color: colors.seam })) };
     this.say(`${edges.length} seam edge${edges.length === 1 ? '' : 's'} marked: where the file split its vertices, each corner keeping its own texture coordinate and normal.`);
     this.drawSelection();
     this.drawPanels();
@@ -729,39 +685,31 @@ export class App {
 
   /** Follows a pointer from the selection, extending the breadcrumb. */
   walk(move: Move): boolean {
-    if (!this.mesh || !this.selection) {
+    if (!this.inspection.selection) {
       this.say('Select an element first: click an arrow, a vertex or a face.');
       return false;
     }
-    const to = walk(this.mesh, this.selection, move);
-    if (typeof to === 'string') {
-      this.byId('walk-message').textContent = to;
-      return false;
-    }
-    this.byId('walk-message').textContent = '';
-    this.selection = to;
-    this.path.push({ move, to });
-    if (this.quizSpec) this.quiz.end();
+    const nowhere = this.inspection.walk(this.mesh, move);
+    this.byId('walk-message').textContent = nowhere ?? '';
+    if (nowhere) return false;
+    if (this.inspection.marks.quiz) this.quiz.end();
     this.afterSelect();
     return true;
   }
 
   back(): void {
-    if (this.path.length <= 1) return;
-    this.path.pop();
-    this.selection = this.path[this.path.length - 1].to;
-    this.afterSelect();
+    if (this.inspection.back()) this.afterSelect();
   }
 
   hover(selection: Selection | null): void {
-    this.hovered = selection;
-    if (this.mesh && selection && exists(this.mesh, selection)) this.hoverLayer.show(this.mesh, hoverHighlight(this.mesh, selection), this.scale);
+    const hovered = this.inspection.hover(this.mesh, selection);
+    if (this.mesh && hovered) this.hoverLayer.show(this.mesh, hoverHighlight(this.mesh, hovered), this.scale);
     else this.hoverLayer.clear();
     this.viewer.requestRender();
   }
 
   setConvention(convention: Convention): void {
-    this.convention = convention;
+    this.inspection.convention = convention;
     this.byId<HTMLSelectElement>('convention').value = convention;
     // everything that names the vertex of a halfedge speaks the naming chosen
     this.drawLegend();
@@ -803,23 +751,20 @@ export class App {
     this.refreshArrowsIfPartial();
     this.drawSelection();
     this.drawPanels();
-    this.tables.reveal(this.selection);
+    this.tables.reveal(this.inspection.selection);
   }
 
   /** The legend: while stepping, the phase and what its colours mean; else the pointers' colours. */
   private drawLegend(): void {
     const stepping = this.snapshot ? steppingTitle(this.snapshot) : null;
     const phase = stepping ? { title: stepping, explanation: this.snapshot?.phase?.explanation ?? '' } : null;
-    renderLegend(this.byId('legend'), phase, this.convention);
+    renderLegend(this.byId('legend'), phase, this.inspection.convention);
   }
 
   private drawSelection(): void {
     const mesh = this.mesh;
     if (!mesh) return;
-    const selected = this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight();
-    const marks = [this.seamSpec, this.problemSpec, this.practiceSpec].filter((spec) => spec !== null);
-    const spec = this.quizSpec ?? this.traversalSpec ?? marks.reduce(combineHighlights, selected);
-    this.selectionLayer.show(mesh, spec, this.scale);
+    this.selectionLayer.show(mesh, this.inspection.highlight(mesh), this.scale);
     const phase = this.snapshot?.phase;
     if (phase && this.snapshot?.stepping) this.phaseLayer.show(mesh, phaseHighlight(mesh, phase), this.scale);
     else this.phaseLayer.clear();
@@ -832,9 +777,9 @@ export class App {
     const snapshot = this.snapshot;
     // a pointer in the record is a step of the walk (Back returns); anything else starts a new one
     const follow = (field: string, s: Selection) => void (isMove(field) ? this.walk(field) : this.select(s));
-    renderInspector(this.byId('record'), this.byId('convention-note'), this.mesh, this.selection, this.convention, follow);
-    renderBreadcrumb(this.byId('breadcrumb'), this.path);
-    if (this.mesh && snapshot) this.operations.update(this.mesh, this.selection, snapshot.unavailable);
+    renderInspector(this.byId('record'), this.byId('convention-note'), this.mesh, this.inspection.selection, this.inspection.convention, follow);
+    renderBreadcrumb(this.byId('breadcrumb'), this.inspection.path);
+    if (this.mesh && snapshot) this.operations.update(this.mesh, this.inspection.selection, snapshot.unavailable);
     if (snapshot) {
       renderHud(this.byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
       renderFileInfo(this.byId('file-info'), snapshot.file, snapshot.report, {
@@ -890,7 +835,7 @@ export class App {
     if (!mesh || note.hidden) return;
     note.textContent = this.arrowsHidden
       ? `Zoom in to see the halfedge arrows: at this zoom an edge is under ${MIN_ARROW_EDGE_PIXELS} pixels long.`
-      : `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${this.selection ? 'selection' : 'centre of the view'}.`;
+      : `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${this.inspection.selection ? 'selection' : 'centre of the view'}.`;
   }
 
   private refreshArrowsIfPartial(): void {
@@ -903,14 +848,8 @@ export class App {
    */
   private async focusFace(sameView: boolean): Promise<number> {
     const mesh = this.mesh!;
-    const s = this.selection;
-    if (s?.kind === 'face') return s.id;
-    if (s?.kind === 'halfedge') return mesh.heFace[s.id] >= 0 ? mesh.heFace[s.id] : mesh.heFace[s.id ^ 1];
-    if (s?.kind === 'edge') return mesh.heFace[2 * s.id] >= 0 ? mesh.heFace[2 * s.id] : mesh.heFace[2 * s.id + 1];
-    if (s?.kind === 'vertex' && mesh.vHalfedge[s.id] >= 0) {
-      const h = mesh.vHalfedge[s.id];
-      return mesh.heFace[h] >= 0 ? mesh.heFace[h] : mesh.heFace[mesh.hePrev[h] ^ 1];
-    }
+    const selected = this.inspection.focusFace(mesh);
+    if (selected >= 0) return selected;
     const last = this.viewFocus;
     if (sameView && last >= 0 && last < mesh.faceSlots && mesh.fDeleted[last] === 0) return last;
     const { width, height } = this.viewer.size();
@@ -1025,7 +964,7 @@ export class App {
   showTables(show: boolean): void {
     this.frame.classList.toggle('tables-folded', !show);
     this.byId('tables-fold').setAttribute('aria-expanded', String(show));
-    if (show) this.tables.reveal(this.selection);
+    if (show) this.tables.reveal(this.inspection.selection);
   }
 
   get tablesShown(): boolean {
@@ -1040,58 +979,4 @@ export class App {
     }
     this.drawSelection();
   }
-}
-
-function idLabels(mesh: HalfedgeMesh): HighlightSpec {
-  const spec = emptyHighlight();
-  for (const v of mesh.vertices()) spec.labels.push({ text: `v${v}`, at: mesh.position(v) as [number, number, number], color: colors.origin });
-  for (const f of mesh.faces()) spec.labels.push({ text: `f${f}`, at: faceCentroid(mesh, f) as [number, number, number], color: colors.face });
-  return spec;
-}
-
-/** The faces at a selection: the face itself, the two beside a halfedge or edge, the fan of a vertex. */
-function facesAt(mesh: HalfedgeMesh, s: Selection): number[] {
-  if (s.kind === 'face') return [s.id];
-  if (s.kind === 'halfedge' || s.kind === 'edge') {
-    const h = s.kind === 'edge' ? 2 * s.id : s.id;
-    return [mesh.heFace[h], mesh.heFace[h ^ 1]].filter((f) => f >= 0);
-  }
-  return [...vertexAdjacentFaces(mesh, s.id)];
-}
-
-/** The way the faces at a selection face (the sum of their vector areas), or null when it has none. */
-function selectionFacing(mesh: HalfedgeMesh, s: Selection): Vector3 | null {
-  const sum = new Vector3();
-  const area = [0, 0, 0];
-  for (const f of facesAt(mesh, s)) sum.add(new Vector3(...faceVectorArea(mesh, f, area)));
-  return sum.lengthSq() > 0 ? sum.normalize() : null;
-}
-
-/** The corners of the faces at a selection (its neighbourhood, which framing shows whole). */
-function neighbourhoodPoints(mesh: HalfedgeMesh, s: Selection): Vector3[] {
-  const points: Vector3[] = [];
-  for (const f of facesAt(mesh, s)) for (const v of faceVertices(mesh, f)) points.push(new Vector3(...mesh.position(v)));
-  return points;
-}
-
-/** The history entry that opened the model the current mesh came from, or null. */
-function openedEntry(snapshot: Snapshot): { name: string; sample: string | null; index: number } | null {
-  const { items, index } = snapshot.history;
-  for (let i = index; i >= 0; i--) {
-    const source = items[i]!.source;
-    if (source.kind === 'open') return { name: source.name, sample: source.sample, index: i };
-  }
-  return null;
-}
-
-/** The sample and the steps since it that lead to the current mesh; no model when a link cannot say. */
-function replayable(snapshot: Snapshot): { model: string | null; steps: ReplayStep[] } {
-  const open = openedEntry(snapshot);
-  if (!open?.sample) return { model: null, steps: [] };
-  const steps: ReplayStep[] = [];
-  for (const { source } of snapshot.history.items.slice(open.index + 1, snapshot.history.index + 1)) {
-    if (source.kind === 'operation' || source.kind === 'edit') steps.push(source);
-    else return { model: null, steps: [] };
-  }
-  return { model: open.sample, steps };
 }

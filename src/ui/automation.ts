@@ -45,7 +45,7 @@ export function automation(app: App) {
     /** The record of an element as the inspector shows it: `{ next: 'h18', origin: 'v4', … }`. */
     record: (element: string | Selection) => {
       const fields: Record<string, string> = {};
-      for (const { field, value } of recordOf(mesh(), asSelection(element), app.convention)) {
+      for (const { field, value } of recordOf(mesh(), asSelection(element), app.inspection.convention)) {
         if (!field) continue;
         fields[field] = 'element' in value ? elementName(value.element) : value.text;
       }
@@ -60,11 +60,14 @@ export function automation(app: App) {
         const placement = placeArrow(m, s.id, newPlacement(), app.scale);
         point = [0, 1, 2].map((i) => 0.35 * placement.start[i] + 0.65 * placement.end[i]) as [number, number, number];
       } else if (s.kind === 'vertex') point = m.position(s.id) as [number, number, number];
-      else if (s.kind === 'edge') point = [0, 1, 2].map((i) => (m.position(m.heVertex[2 * s.id])[i] + m.position(m.heVertex[2 * s.id + 1])[i]) / 2) as [number, number, number];
+      else if (s.kind === 'edge') {
+        const [a, b] = [m.origin(m.edgeHalfedge(s.id)), m.origin(m.twin(m.edgeHalfedge(s.id)))].map((v) => m.position(v));
+        point = [0, 1, 2].map((i) => (a[i] + b[i]) / 2) as [number, number, number];
+      }
       else {
         // the middle of the face's first triangle lies inside the face even when it is not convex
-        const h = m.fHalfedge[s.id];
-        const corners = [m.heVertex[h], m.heVertex[m.heNext[h]], m.heVertex[m.hePrev[h]]].map((v) => m.position(v));
+        const h = m.faceHalfedge(s.id);
+        const corners = [m.origin(h), m.target(h), m.origin(m.prev(h))].map((v) => m.position(v));
         point = [0, 1, 2].map((i) => (corners[0][i] + corners[1][i] + corners[2][i]) / 3) as [number, number, number];
       }
       const { x, y, visible } = app.viewer.project(point);
@@ -126,9 +129,9 @@ export function automation(app: App) {
     simulateWorkerCrash: () => app.client.simulateCrash(),
     /** Everything the page shows, as plain data. */
     state: () => ({
-      selection: app.selection ? elementName(app.selection) : null,
-      breadcrumb: app.path.map((step) => ({ move: step.move, to: elementName(step.to) })),
-      convention: app.convention,
+      selection: app.inspection.selection ? elementName(app.inspection.selection) : null,
+      breadcrumb: app.inspection.path.map((step) => ({ move: step.move, to: elementName(step.to) })),
+      convention: app.inspection.convention,
       message: app.message,
       stats: app.snapshot?.stats ?? null,
       problems: app.snapshot?.problems ?? [],

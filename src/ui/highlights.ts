@@ -13,9 +13,9 @@ type Point = [number, number, number];
 
 /** Where a label for halfedge h goes: the middle of its arrow. */
 function arrowMiddle(mesh: HalfedgeMesh, h: number): Point {
-  const a = mesh.position(mesh.heVertex[h]);
-  const b = mesh.position(mesh.heVertex[mesh.heNext[h]]);
-  const side = mesh.heFace[h] !== -1 ? faceCentroid(mesh, mesh.heFace[h]) : null;
+  const a = mesh.position(mesh.origin(h));
+  const b = mesh.position(mesh.target(h));
+  const side = mesh.face(h) !== -1 ? faceCentroid(mesh, mesh.face(h)) : null;
   const mid: Point = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2];
   if (!side) return mid;
   // a quarter of the way towards the face's centre, so twin labels do not overlap
@@ -32,18 +32,18 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
   switch (s.kind) {
     case 'halfedge': {
       const h = s.id;
-      const next = mesh.heNext[h];
-      const prev = mesh.hePrev[h];
-      const face = mesh.heFace[h];
+      const next = mesh.next(h);
+      const prev = mesh.prev(h);
+      const face = mesh.face(h);
       if (face !== -1) {
         spec.faces.push({ id: face, color: colors.face });
         label(`f${face}`, faceCentroid(mesh, face) as Point, colors.face);
       }
       halfedge(next, colors.next, `next h${next}`);
       if (prev !== next) halfedge(prev, colors.prev, `prev h${prev}`, hollowRoles.has('prev'));
-      halfedge(h ^ 1, colors.twin, `twin h${h ^ 1}`, hollowRoles.has('twin'));
+      halfedge(mesh.twin(h), colors.twin, `twin h${mesh.twin(h)}`, hollowRoles.has('twin'));
       halfedge(h, colors.selected, `h${h}`);
-      const vertex = convention === 'origin' ? mesh.heVertex[h] : mesh.heVertex[next];
+      const vertex = convention === 'origin' ? mesh.origin(h) : mesh.origin(next);
       spec.vertices.push({ id: vertex, color: colors.origin });
       label(`${convention} v${vertex}`, mesh.position(vertex) as Point, colors.origin);
       break;
@@ -52,14 +52,14 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
       const v = s.id;
       spec.vertices.push({ id: v, color: colors.origin });
       label(`v${v}`, mesh.position(v) as Point, colors.origin);
-      const start = mesh.vHalfedge[v];
+      const start = mesh.vertexHalfedge(v);
       if (start < 0) break;
       let h = start;
       do {
-        if (mesh.heFace[h] !== -1) spec.faces.push({ id: mesh.heFace[h], color: colors.face });
-        spec.vertices.push({ id: mesh.heVertex[h ^ 1], color: colors.next });
+        if (mesh.face(h) !== -1) spec.faces.push({ id: mesh.face(h), color: colors.face });
+        spec.vertices.push({ id: mesh.origin(mesh.twin(h)), color: colors.next });
         spec.edges.push({ id: h >> 1, color: colors.next });
-        h = mesh.hePrev[h] ^ 1;
+        h = mesh.twin(mesh.prev(h));
       } while (h !== start && spec.vertices.length < 4096);
       halfedge(start, colors.selected, `halfedge h${start}`);
       break;
@@ -68,11 +68,11 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
       const f = s.id;
       spec.faces.push({ id: f, color: colors.face });
       label(`f${f}`, faceCentroid(mesh, f) as Point, colors.face);
-      const start = mesh.fHalfedge[f];
+      const start = mesh.faceHalfedge(f);
       let h = start;
       do {
         if (h !== start) halfedge(h, colors.next);
-        h = mesh.heNext[h];
+        h = mesh.next(h);
       } while (h !== start && spec.halfedges.length < 4096);
       halfedge(start, colors.selected, `halfedge h${start}`);
       break;
@@ -80,10 +80,11 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
     case 'edge': {
       const e = s.id;
       spec.edges.push({ id: e, color: colors.selected });
-      halfedge(2 * e, colors.selected, `h${2 * e}`);
-      halfedge(2 * e + 1, colors.twin, `h${2 * e + 1}`);
-      const a = mesh.position(mesh.heVertex[2 * e]);
-      const b = mesh.position(mesh.heVertex[2 * e + 1]);
+      const h = mesh.edgeHalfedge(e);
+      halfedge(h, colors.selected, `h${h}`);
+      halfedge(mesh.twin(h), colors.twin, `h${mesh.twin(h)}`);
+      const a = mesh.position(mesh.origin(h));
+      const b = mesh.position(mesh.origin(mesh.twin(h)));
       label(`e${e}`, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2], colors.selected);
       break;
     }
@@ -115,7 +116,7 @@ export function phaseHighlight(mesh: HalfedgeMesh, phase: Phase): HighlightSpec 
   for (const f of take(phase.created?.faces, faceAlive)) spec.faces.push({ id: f, color: phaseColors.created });
   for (const h of take(phase.rewired?.halfedges, halfedgeAlive)) spec.halfedges.push({ id: h, color: phaseColors.rewired });
   for (const h of take(phase.created?.halfedges, halfedgeAlive)) spec.halfedges.push({ id: h, color: phaseColors.created });
-  for (const e of take(phase.created?.edges, (e) => halfedgeAlive(2 * e))) spec.edges.push({ id: e, color: phaseColors.created });
+  for (const e of take(phase.created?.edges, (e) => halfedgeAlive(mesh.edgeHalfedge(e)))) spec.edges.push({ id: e, color: phaseColors.created });
   for (const v of take(phase.moved?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.moved });
   for (const v of take(phase.created?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.created });
   return spec;
@@ -148,8 +149,8 @@ export function labelPoint(mesh: HalfedgeMesh, s: Selection): Point {
   if (s.kind === 'halfedge') return arrowMiddle(mesh, s.id);
   if (s.kind === 'vertex') return mesh.position(s.id) as Point;
   if (s.kind === 'face') return faceCentroid(mesh, s.id) as Point;
-  const a = mesh.position(mesh.heVertex[2 * s.id]);
-  const b = mesh.position(mesh.heVertex[2 * s.id + 1]);
+  const a = mesh.position(mesh.origin(mesh.edgeHalfedge(s.id)));
+  const b = mesh.position(mesh.origin(mesh.twin(mesh.edgeHalfedge(s.id))));
   return [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2];
 }
 
@@ -181,4 +182,12 @@ export function combineHighlights(a: HighlightSpec, b: HighlightSpec): Highlight
     edges: [...a.edges, ...b.edges],
     labels: [...a.labels, ...b.labels],
   };
+}
+
+/** Every vertex and face labelled with its id. */
+export function idLabels(mesh: HalfedgeMesh): HighlightSpec {
+  const spec = emptyHighlight();
+  for (const v of mesh.vertices()) spec.labels.push({ text: `v${v}`, at: mesh.position(v) as [number, number, number], color: colors.origin });
+  for (const f of mesh.faces()) spec.labels.push({ text: `f${f}`, at: faceCentroid(mesh, f) as [number, number, number], color: colors.face });
+  return spec;
 }

@@ -17,7 +17,7 @@ const walk = (app: App, key: string) => void app.walk(moveKeys[key]!);
 export const keyBindings: KeyBinding[] = [
   { keys: ['n', 'p', 't'], help: 'walk to next / prev / twin', run: walk },
   { keys: ['f', 'e'], help: 'walk to the face / edge', run: walk },
-  { keys: ['v'], help: 'walk to the vertex the naming names: origin or target', run: (app) => void app.walk(app.convention) },
+  { keys: ['v'], help: 'walk to the vertex the naming names: origin or target', run: (app) => void app.walk(app.inspection.convention) },
   { keys: ['h'], help: 'the halfedge of the selected vertex, face or edge', run: walk },
   { keys: ['r', 'l'], help: 'twin.next / prev.twin: rotate around the origin', run: walk },
   { keys: ['backspace'], help: 'back one step of the walk', run: (app) => app.back() },

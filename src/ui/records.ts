@@ -32,14 +32,14 @@ export function recordOf(mesh: HalfedgeMesh, s: Selection, convention: Conventio
     case 'halfedge': {
       const vertexField: RecordField =
         convention === 'origin'
-          ? { field: 'origin', value: element('vertex', mesh.heVertex[id]) }
-          : { field: 'target', value: element('vertex', mesh.heVertex[mesh.heNext[id]]) };
+          ? { field: 'origin', value: element('vertex', mesh.origin(id)) }
+          : { field: 'target', value: element('vertex', mesh.target(id)) };
       return [
-        { field: 'next', value: element('halfedge', mesh.heNext[id]) },
-        { field: 'prev', value: element('halfedge', mesh.hePrev[id]) },
-        { field: 'twin', value: element('halfedge', id ^ 1) },
+        { field: 'next', value: element('halfedge', mesh.next(id)) },
+        { field: 'prev', value: element('halfedge', mesh.prev(id)) },
+        { field: 'twin', value: element('halfedge', mesh.twin(id)) },
         vertexField,
-        { field: 'face', value: mesh.heFace[id] < 0 ? text('none (-1): boundary') : element('face', mesh.heFace[id]) },
+        { field: 'face', value: mesh.face(id) < 0 ? text('none (-1): boundary') : element('face', mesh.face(id)) },
         { field: 'edge', value: element('edge', id >> 1) },
       ];
     }
@@ -47,22 +47,22 @@ export function recordOf(mesh: HalfedgeMesh, s: Selection, convention: Conventio
       const p = mesh.position(id).map((x) => round(x));
       return [
         { field: 'position', value: text(`(${p.join(', ')})`) },
-        { field: 'halfedge', value: element('halfedge', mesh.vHalfedge[id]) },
+        { field: 'halfedge', value: element('halfedge', mesh.vertexHalfedge(id)) },
         { field: 'degree', value: text(mesh.vertexDegree(id)) },
         { field: 'boundary', value: text(mesh.isBoundaryVertex(id) ? 'yes' : 'no') },
       ];
     }
     case 'face':
       return [
-        { field: 'halfedge', value: element('halfedge', mesh.fHalfedge[id]) },
+        { field: 'halfedge', value: element('halfedge', mesh.faceHalfedge(id)) },
         { field: 'degree', value: text(mesh.faceDegree(id)) },
       ];
     case 'edge':
       return [
-        { field: 'halfedges', value: element('halfedge', 2 * id) },
-        { field: '', value: element('halfedge', 2 * id + 1) },
-        { field: 'vertices', value: element('vertex', mesh.heVertex[2 * id]) },
-        { field: '', value: element('vertex', mesh.heVertex[2 * id + 1]) },
+        { field: 'halfedges', value: element('halfedge', mesh.edgeHalfedge(id)) },
+        { field: '', value: element('halfedge', mesh.twin(mesh.edgeHalfedge(id))) },
+        { field: 'vertices', value: element('vertex', mesh.origin(mesh.edgeHalfedge(id))) },
+        { field: '', value: element('vertex', mesh.origin(mesh.twin(mesh.edgeHalfedge(id)))) },
         { field: 'boundary', value: text(mesh.isBoundaryEdge(id) ? 'yes' : 'no') },
       ];
   }

@@ -64,13 +64,13 @@ export function walk(mesh: HalfedgeMesh, from: Selection, move: Move): Selection
   if (move === 'halfedge') {
     switch (from.kind) {
       case 'vertex': {
-        const h = mesh.vHalfedge[from.id];
+        const h = mesh.vertexHalfedge(from.id);
         return h < 0 ? `${name} is isolated: it has no halfedge` : { kind: 'halfedge', id: h };
       }
       case 'face':
-        return { kind: 'halfedge', id: mesh.fHalfedge[from.id] };
+        return { kind: 'halfedge', id: mesh.faceHalfedge(from.id) };
       case 'edge':
-        return { kind: 'halfedge', id: 2 * from.id };
+        return { kind: 'halfedge', id: mesh.edgeHalfedge(from.id) };
       case 'halfedge':
         return from;
     }
@@ -81,25 +81,25 @@ export function walk(mesh: HalfedgeMesh, from: Selection, move: Move): Selection
   const h = from.id;
   switch (move) {
     case 'next':
-      return { kind: 'halfedge', id: mesh.heNext[h] };
+      return { kind: 'halfedge', id: mesh.next(h) };
     case 'prev':
-      return { kind: 'halfedge', id: mesh.hePrev[h] };
+      return { kind: 'halfedge', id: mesh.prev(h) };
     case 'twin':
-      return { kind: 'halfedge', id: h ^ 1 };
+      return { kind: 'halfedge', id: mesh.twin(h) };
     case 'face': {
-      const f = mesh.heFace[h];
+      const f = mesh.face(h);
       return f < 0 ? `${name} is a boundary halfedge: it runs around a hole and has no face` : { kind: 'face', id: f };
     }
     case 'origin':
-      return { kind: 'vertex', id: mesh.heVertex[h] };
+      return { kind: 'vertex', id: mesh.origin(h) };
     case 'target':
-      return { kind: 'vertex', id: mesh.heVertex[mesh.heNext[h]] };
+      return { kind: 'vertex', id: mesh.target(h) };
     case 'edge':
       return { kind: 'edge', id: h >> 1 };
     case 'twin.next':
-      return { kind: 'halfedge', id: mesh.heNext[h ^ 1] };
+      return { kind: 'halfedge', id: mesh.next(mesh.twin(h)) };
     case 'prev.twin':
-      return { kind: 'halfedge', id: mesh.hePrev[h] ^ 1 };
+      return { kind: 'halfedge', id: mesh.twin(mesh.prev(h)) };
   }
 }
 

@@ -4,7 +4,7 @@
  * `?model=torus.off&ops=[…]&select=h17&naming=target&camera=…&mode=top`. Uploaded files never leave the
  * browser, so a link can only name a sample model.
  */
-import type { EditRequest, OperationRequest } from '../workers/protocol.js';
+import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
 import type { Convention } from './records.js';
 import { parseElementName, type Selection } from './selection.js';
 
@@ -75,4 +75,26 @@ function replaySteps(text: string | null): ReplayStep[] {
   } catch {
     return [];
   }
+}
+
+/** The history entry that opened the model the current mesh came from, or null. */
+export function openedEntry(snapshot: Pick<Snapshot, 'history'>): { name: string; sample: string | null; index: number } | null {
+  const { items, index } = snapshot.history;
+  for (let i = index; i >= 0; i--) {
+    const source = items[i]!.source;
+    if (source.kind === 'open') return { name: source.name, sample: source.sample, index: i };
+  }
+  return null;
+}
+
+/** The sample and the steps since it that lead to the current mesh; no model when a link cannot say. */
+export function replayable(snapshot: Pick<Snapshot, 'history'>): { model: string | null; steps: ReplayStep[] } {
+  const open = openedEntry(snapshot);
+  if (!open?.sample) return { model: null, steps: [] };
+  const steps: ReplayStep[] = [];
+  for (const { source } of snapshot.history.items.slice(open.index + 1, snapshot.history.index + 1)) {
+    if (source.kind === 'operation' || source.kind === 'edit') steps.push(source);
+    else return { model: null, steps: [] };
+  }
+  return { model: open.sample, steps };
 }

@@ -45,7 +45,7 @@ function selectedEdge(s: Selection | null): number {
 
 /** The face a selection names (a face, or a halfedge's face), or -1. */
 function selectedFace(mesh: HalfedgeMesh, s: Selection | null): number {
-  return s?.kind === 'face' ? s.id : s?.kind === 'halfedge' ? mesh.heFace[s.id] : -1;
+  return s?.kind === 'face' ? s.id : s?.kind === 'halfedge' ? mesh.face(s.id) : -1;
 }
 
 export class OperationsPanel {
@@ -228,11 +228,11 @@ export class OperationsPanel {
     const face = selectedFace(mesh, this.selection);
     const corners: number[] = [];
     if (face >= 0) {
-      let h = mesh.fHalfedge[face];
+      let h = mesh.faceHalfedge(face);
       do {
-        corners.push(mesh.heVertex[h]);
-        h = mesh.heNext[h];
-      } while (h !== mesh.fHalfedge[face]);
+        corners.push(mesh.origin(h));
+        h = mesh.next(h);
+      } while (h !== mesh.faceHalfedge(face));
     }
     const keep = [this.splitFrom.value, this.splitTo.value];
     for (const [i, select] of [this.splitFrom, this.splitTo].entries()) {

@@ -4,7 +4,7 @@
  * (with its write and line), and every write it made, each of which can be shown in the view.
  * Code and progress are kept in the browser per exercise; "Export" saves all solutions as one file.
  */
-import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, serializeMesh } from '../../core/index.js';
+import { type PointerDiff, type SerializedMesh, serializeMesh } from '../../core/index.js';
 // module by module: the index would bring the solution parser, which only the sandbox needs
 import { type Exercise, fixtureMesh } from '../../core/practice/exercise.js';
 import { exercises } from '../../core/practice/exercises.js';
@@ -267,7 +267,7 @@ export class PracticePanel {
       const frame = this.framed !== result;
       await this.actions.showState(serializeMesh(result.before), this.fixtureLabel(result.fixture, result.input), null, frame, marks);
       // where the code read: on a closed mesh the whole view may show the other side
-      if (frame && result.visits.length > 0) this.actions.frame({ kind: 'vertex', id: result.before.heVertex[result.visits[0]] });
+      if (frame && result.visits.length > 0) this.actions.frame({ kind: 'vertex', id: result.before.origin(result.visits[0]) });
       this.framed = result;
     }
     this.drawReads(fixture);

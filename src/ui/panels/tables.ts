@@ -36,7 +36,7 @@ export const tableSpecs: TableSpec[] = [
     widths: 'minmax(0, 1fr) minmax(0, 3fr) minmax(0, 1.2fr)',
     columns: () => ['vertex', 'coordinates', 'incident halfedge'],
     count: (mesh) => mesh.vertexSlots,
-    row: (mesh, id) => [elementName({ kind: 'vertex', id }), `(${mesh.position(id).map(round).join(', ')})`, h(mesh.vHalfedge[id])] as Array<string | Selection>,
+    row: (mesh, id) => [elementName({ kind: 'vertex', id }), `(${mesh.position(id).map(round).join(', ')})`, h(mesh.vertexHalfedge(id))] as Array<string | Selection>,
   },
   {
     kind: 'face',
@@ -44,7 +44,7 @@ export const tableSpecs: TableSpec[] = [
     widths: 'repeat(3, minmax(0, 1fr))',
     columns: () => ['face', 'halfedge', 'sides'],
     count: (mesh) => mesh.faceSlots,
-    row: (mesh, id) => [elementName({ kind: 'face', id }), h(mesh.fHalfedge[id]), String(mesh.faceDegree(id))] as Array<string | Selection>,
+    row: (mesh, id) => [elementName({ kind: 'face', id }), h(mesh.faceHalfedge(id)), String(mesh.faceDegree(id))] as Array<string | Selection>,
   },
   {
     kind: 'halfedge',
@@ -55,11 +55,11 @@ export const tableSpecs: TableSpec[] = [
     row: (mesh, id, convention) =>
       [
         elementName({ kind: 'halfedge', id }),
-        v(convention === 'origin' ? mesh.heVertex[id] : mesh.heVertex[mesh.heNext[id]]),
-        h(id ^ 1),
-        f(mesh.heFace[id]),
-        h(mesh.heNext[id]),
-        h(mesh.hePrev[id]),
+        v(convention === 'origin' ? mesh.origin(id) : mesh.target(id)),
+        h(mesh.twin(id)),
+        f(mesh.face(id)),
+        h(mesh.next(id)),
+        h(mesh.prev(id)),
         `e${id >> 1}`,
       ] as Array<string | Selection>,
   },

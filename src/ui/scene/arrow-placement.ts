@@ -30,12 +30,12 @@ export function newPlacement(): ArrowPlacement {
 
 /** Places the arrow of halfedge `h` into `out` (scaled by `scale`, e.g. thicker in presentation mode). */
 export function placeArrow(mesh: HalfedgeMesh, h: number, out: ArrowPlacement, scale = 1): ArrowPlacement {
-  const { heNext, heVertex, heFace, positions: p } = mesh;
-  const a = 3 * heVertex[h];
-  const b = 3 * heVertex[heNext[h]];
-  const boundary = heFace[h] === -1;
+  const p = mesh.positions;
+  const a = 3 * mesh.origin(h);
+  const b = 3 * mesh.target(h);
+  const boundary = mesh.face(h) === -1;
   // the face whose centre the arrow leans towards (or, for a boundary halfedge, away from)
-  const [cx, cy, cz, nx, ny, nz] = centreAndNormal(mesh, boundary ? h ^ 1 : h);
+  const [cx, cy, cz, nx, ny, nz] = centreAndNormal(mesh, boundary ? mesh.twin(h) : h);
   // each end moves towards the centre (a shrunk copy of the face), or as far away for a boundary
   const k = boundary ? 2 - SHRINK : SHRINK;
   const ax = cx + k * (p[a] - cx);
@@ -65,7 +65,7 @@ export function placeArrow(mesh: HalfedgeMesh, h: number, out: ArrowPlacement, s
 
 /** Centre and unit normal of the face on the left of `h` (h must not be a boundary halfedge). */
 function centreAndNormal(mesh: HalfedgeMesh, h: number): [number, number, number, number, number, number] {
-  const { heNext, heVertex, positions: p } = mesh;
+  const p = mesh.positions;
   let cx = 0;
   let cy = 0;
   let cz = 0;
@@ -75,8 +75,8 @@ function centreAndNormal(mesh: HalfedgeMesh, h: number): [number, number, number
   let n = 0;
   let g = h;
   do {
-    const a = 3 * heVertex[g];
-    const b = 3 * heVertex[heNext[g]];
+    const a = 3 * mesh.origin(g);
+    const b = 3 * mesh.target(g);
     cx += p[a];
     cy += p[a + 1];
     cz += p[a + 2];
@@ -84,7 +84,7 @@ function centreAndNormal(mesh: HalfedgeMesh, h: number): [number, number, number
     ny += p[a + 2] * p[b] - p[a] * p[b + 2];
     nz += p[a] * p[b + 1] - p[a + 1] * p[b];
     n++;
-    g = heNext[g];
+    g = mesh.next(g);
   } while (g !== h && n <= mesh.halfedgeSlots);
   const length = Math.hypot(nx, ny, nz) || 1;
   return [cx / n, cy / n, cz / n, nx / length, ny / length, nz / length];

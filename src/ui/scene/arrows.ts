@@ -90,7 +90,7 @@ export class ArrowLayer {
   update(mesh: HalfedgeMesh, halfedges: Int32Array | null, scale: number): void {
     this.shown = halfedges ?? liveHalfedges(mesh);
     let boundaryCount = 0;
-    for (const h of this.shown) if (mesh.heFace[h] === -1) boundaryCount++;
+    for (const h of this.shown) if (mesh.face(h) === -1) boundaryCount++;
     const interior = (this.interior = this.withRoom(this.interior, this.shown.length - boundaryCount));
     const boundary = (this.boundary = this.withRoom(this.boundary, boundaryCount));
     const placement = newPlacement();
@@ -152,17 +152,17 @@ export function halfedgesNear(mesh: HalfedgeMesh, focusFace: number, limit = MAX
   seen[focusFace] = 1;
   for (let i = 0; i < queue.length && chosen.length < limit; i++) {
     const f = queue[i];
-    const start = mesh.fHalfedge[f];
+    const start = mesh.faceHalfedge(f);
     let h = start;
     do {
       chosen.push(h);
-      const across = mesh.heFace[h ^ 1];
-      if (across === -1) chosen.push(h ^ 1);
+      const across = mesh.face(mesh.twin(h));
+      if (across === -1) chosen.push(mesh.twin(h));
       else if (!seen[across]) {
         seen[across] = 1;
         queue.push(across);
       }
-      h = mesh.heNext[h];
+      h = mesh.next(h);
     } while (h !== start);
   }
   return Int32Array.from(chosen);

@@ -91,7 +91,7 @@ export class HighlightLayer {
       const lineColors: number[] = [];
       for (const { id, color } of spec.edges) {
         const c = new Color(color);
-        for (const v of [mesh.heVertex[2 * id], mesh.heVertex[2 * id + 1]]) {
+        for (const v of [mesh.origin(mesh.edgeHalfedge(id)), mesh.origin(mesh.twin(mesh.edgeHalfedge(id)))]) {
           points.push(...mesh.position(v));
           lineColors.push(c.r, c.g, c.b);
         }
@@ -172,11 +172,11 @@ export class HighlightLayer {
     for (const { id, color } of faces) {
       const c = new Color(color);
       const loop: number[] = [];
-      const start = mesh.fHalfedge[id];
+      const start = mesh.faceHalfedge(id);
       let h = start;
       do {
-        loop.push(mesh.heVertex[h]);
-        h = mesh.heNext[h];
+        loop.push(mesh.origin(h));
+        h = mesh.next(h);
       } while (h !== start);
       // a fan is enough for a tint, even on a non-convex face it only overdraws
       for (let i = 1; i + 1 < loop.length; i++) {

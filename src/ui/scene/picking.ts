@@ -45,17 +45,17 @@ export async function pick(context: PickContext, x: number, y: number, filter: P
   // boundary halfedges drawn on screen
   const halfedges: number[] = [];
   if (hit) {
-    const start = mesh.fHalfedge[hit.face];
+    const start = mesh.faceHalfedge(hit.face);
     let h = start;
     do {
-      halfedges.push(h, h ^ 1);
-      h = mesh.heNext[h];
+      halfedges.push(h, mesh.twin(h));
+      h = mesh.next(h);
     } while (h !== start);
   } else {
-    for (const h of context.shown) if (mesh.heFace[h] === -1) halfedges.push(h);
+    for (const h of context.shown) if (mesh.face(h) === -1) halfedges.push(h);
   }
   const nearestHalfedge = nearest(halfedges, screenDistanceToArrow);
-  const vertices = [...new Set(halfedges.map((h) => mesh.heVertex[h]))];
+  const vertices = [...new Set(halfedges.map((h) => mesh.origin(h)))];
   const nearestVertex = nearest(vertices, screenDistanceToVertex);
 
   switch (filter) {
@@ -68,7 +68,7 @@ export async function pick(context: PickContext, x: number, y: number, filter: P
     case 'edge': {
       const edge = nearest(
         halfedges.filter((h) => (h & 1) === 0),
-        (h) => segmentDistance(x, y, viewer.project(mesh.position(mesh.heVertex[h]) as [number, number, number]), viewer.project(mesh.position(mesh.heVertex[h ^ 1]) as [number, number, number])),
+        (h) => segmentDistance(x, y, viewer.project(mesh.position(mesh.origin(h)) as [number, number, number]), viewer.project(mesh.position(mesh.origin(mesh.twin(h))) as [number, number, number])),
       );
       return edge && (hit || edge.distance < 3 * ARROW_RADIUS * scale) ? { kind: 'edge', id: edge.id >> 1 } : null;
     }

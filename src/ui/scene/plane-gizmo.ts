@@ -111,18 +111,18 @@ export class PlaneGizmo {
     const crossing: number[] = [];
     for (const f of mesh.faces()) {
       crossing.length = 0;
-      const start = mesh.fHalfedge[f];
+      const start = mesh.faceHalfedge(f);
       let h = start;
       do {
-        const u = mesh.heVertex[h];
-        const v = mesh.heVertex[mesh.heNext[h]];
+        const u = mesh.origin(h);
+        const v = mesh.target(h);
         const su = side(u);
         const sv = side(v);
         if ((su < 0 && sv >= 0) || (su >= 0 && sv < 0)) {
           const t = su / (su - sv);
           for (let k = 0; k < 3; k++) crossing.push(p[3 * u + k] + t * (p[3 * v + k] - p[3 * u + k]));
         }
-        h = mesh.heNext[h];
+        h = mesh.next(h);
       } while (h !== start);
       // crossings come in pairs around the face: in, out, in, out
       for (let i = 0; i + 5 < crossing.length; i += 6) points.push(...crossing.slice(i, i + 6));

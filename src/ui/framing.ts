@@ -1,0 +1,64 @@
+/**
+ * Where a selection lies, for the camera: the faces at it, the way they face, and the corners
+ * that framing shows whole.
+ */
+import { Box3, Vector3 } from 'three';
+import { faceVectorArea, faceVertices, type HalfedgeMesh, vertexAdjacentFaces } from '../core/index.js';
+import { selectionHighlight } from './highlights.js';
+import type { Convention } from './records.js';
+import type { Selection } from './selection.js';
+
+/** What the camera fits into the view: a box, and the radius of a sphere around it. */
+export interface Bounds {
+  box: Box3;
+  radius: number;
+}
+
+/** The whole mesh. */
+export function meshBounds(mesh: HalfedgeMesh): Bounds {
+  const box = new Box3();
+  const p = mesh.positions;
+  for (const v of mesh.vertices()) box.expandByPoint(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2]));
+  const centre = box.getCenter(new Vector3());
+  let radius = 0;
+  for (const v of mesh.vertices()) radius = Math.max(radius, centre.distanceTo(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2])));
+  return { box, radius };
+}
+
+/** An element, the faces around it and everything its highlight draws (the arrows of its pointers). */
+export function selectionBounds(mesh: HalfedgeMesh, s: Selection, convention: Convention): Bounds {
+  const points = neighbourhoodPoints(mesh, s);
+  const spec = selectionHighlight(mesh, s, convention);
+  for (const { id } of spec.vertices) points.push(new Vector3(...mesh.position(id)));
+  for (const { id } of spec.halfedges) points.push(new Vector3(...mesh.position(mesh.origin(id))), new Vector3(...mesh.position(mesh.target(id))));
+  const box = new Box3().setFromPoints(points);
+  const centre = box.getCenter(new Vector3());
+  // a sphere around the points, with a margin for the arrows and labels at the rim
+  const radius = 1.1 * Math.max(1e-9, ...points.map((p) => p.distanceTo(centre)));
+  return { box, radius };
+}
+
+/** The faces at a selection: the face itself, the two beside a halfedge or edge, the fan of a vertex. */
+export function facesAt(mesh: HalfedgeMesh, s: Selection): number[] {
+  if (s.kind === 'face') return [s.id];
+  if (s.kind === 'halfedge' || s.kind === 'edge') {
+    const h = s.kind === 'edge' ? mesh.edgeHalfedge(s.id) : s.id;
+    return [mesh.face(h), mesh.face(mesh.twin(h))].filter((f) => f >= 0);
+  }
+  return [...vertexAdjacentFaces(mesh, s.id)];
+}
+
+/** The way the faces at a selection face (the sum of their vector areas), or null when it has none. */
+export function selectionFacing(mesh: HalfedgeMesh, s: Selection): Vector3 | null {
+  const sum = new Vector3();
+  const area = [0, 0, 0];
+  for (const f of facesAt(mesh, s)) sum.add(new Vector3(...faceVectorArea(mesh, f, area)));
+  return sum.lengthSq() > 0 ? sum.normalize() : null;
+}
+
+/** The corners of the faces at a selection (its neighbourhood, which framing shows whole). */
+export function neighbourhoodPoints(mesh: HalfedgeMesh, s: Selection): Vector3[] {
+  const points: Vector3[] = [];
+  for (const f of facesAt(mesh, s)) for (const v of faceVertices(mesh, f)) points.push(new Vector3(...mesh.position(v)));
+  return points;
+}
