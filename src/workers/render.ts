@@ -64,21 +64,8 @@ export class RenderLayout {
     this.trianglesUsed = 0;
     for (let f = 0; f < mesh.faceSlots; f++) {
       if (mesh.fDeleted[f]) continue;
-      const t = (this.faceStart[f] = this.trianglesUsed);
-      const h = mesh.fHalfedge[f];
-      if (mesh.heNext[mesh.heNext[mesh.heNext[h]]] === h) {
-        // a triangle (most faces): its corners as they are, without a list
-        triangles[3 * t] = mesh.heVertex[h];
-        triangles[3 * t + 1] = mesh.heVertex[mesh.heNext[h]];
-        triangles[3 * t + 2] = mesh.heVertex[mesh.hePrev[h]];
-        triangleFace[t] = f;
-        this.faceCount[f] = 1;
-      } else {
-        const corners = faceTriangles(mesh, f);
-        writeTriangles(corners, f, t, triangles, triangleFace);
-        this.faceCount[f] = corners.length / 3;
-      }
-      this.faceRoom[f] = this.faceCount[f];
+      this.faceStart[f] = this.trianglesUsed;
+      this.faceCount[f] = this.faceRoom[f] = layFace(mesh, f, this.trianglesUsed, triangles, triangleFace);
       this.trianglesUsed += this.faceCount[f];
     }
     this.capacity = { vertices: vertexRoom, edges: edgeRoom, triangles: triangleRoom };
@@ -102,12 +89,14 @@ export class RenderLayout {
   patch(mesh: HalfedgeMesh, change: ChangeRecord): RenderPatch | null {
     if (mesh.vertexSlots > this.capacity.vertices || mesh.edgeSlots > this.capacity.edges || mesh.faceSlots > this.faceStart.length) return null;
     const touched = touchedBy(mesh, change);
-    if (this.polygons > 0) {
-      // a moved corner can change how a polygon splits into triangles: those polygons are drawn again
-      if (touched.moved.size > mesh.vertexSlots / 4) return null;
-      for (const v of touched.moved) this.polygonsAround(mesh, v, touched.faces);
-    }
     const writes: RenderWrite[] = [];
+    if (this.polygons > 0) {
+      // a moved corner can change how a polygon splits into triangles: those polygons are drawn
+      // again; when many corners moved (a smoothing step), every face, in one range
+      const onlyMoved = change.pointers.array.length === 0 && touched.vertices.size + touched.edges.size + touched.faces.size === 0;
+      if (onlyMoved && touched.moved.size > mesh.vertexSlots / 4) writes.push(...this.everyFace(mesh));
+      else for (const v of touched.moved) this.polygonsAround(mesh, v, touched.faces);
+    }
     const fallback = liveVertex(mesh);
 
     writes.push(...positionWrites(mesh, [...touched.moved, ...touched.vertices]));
@@ -138,6 +127,20 @@ export class RenderLayout {
       if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
     }
     return { writes, counts: this.counts(mesh) };
+  }
+
+  /**
+   * The triangles of every face, each at its range, as one write of the buffers in use: a polygon
+   * keeps its number of sides when its corners move, so every range keeps its size.
+   */
+  private everyFace(mesh: HalfedgeMesh): RenderWrite[] {
+    const triangles = new Uint32Array(3 * this.trianglesUsed);
+    const triangleFace = new Int32Array(this.trianglesUsed).fill(-1);
+    for (let f = 0; f < mesh.faceSlots; f++) if (!mesh.fDeleted[f]) this.faceCount[f] = layFace(mesh, f, this.faceStart[f], triangles, triangleFace);
+    return [
+      { buffer: 'triangles', offset: 0, data: triangles },
+      { buffer: 'triangleFace', offset: 0, data: triangleFace },
+    ];
   }
 
   /** Adds the faces of more than three sides around vertex `v` to `faces`. */
@@ -222,6 +225,22 @@ function writeEdge(mesh: HalfedgeMesh, e: number, edges: Uint32Array, at: number
   const a = Math.max(0, mesh.heVertex[2 * e]);
   edges[at] = a;
   edges[at + 1] = mesh.eDeleted[e] ? a : mesh.heVertex[2 * e + 1];
+}
+
+/** Writes the triangles of face `f` from triangle `t` on; returns how many. */
+function layFace(mesh: HalfedgeMesh, f: number, t: number, triangles: Uint32Array, triangleFace: Int32Array): number {
+  const h = mesh.faceHalfedge(f);
+  if (mesh.next(mesh.next(mesh.next(h))) === h) {
+    // a triangle (most faces): its corners as they are, without a list
+    triangles[3 * t] = mesh.origin(h);
+    triangles[3 * t + 1] = mesh.target(h);
+    triangles[3 * t + 2] = mesh.origin(mesh.prev(h));
+    triangleFace[t] = f;
+    return 1;
+  }
+  const corners = faceTriangles(mesh, f);
+  writeTriangles(corners, f, t, triangles, triangleFace);
+  return corners.length / 3;
 }
 
 function writeTriangles(corners: Uint32Array, f: number, first: number, triangles: Uint32Array, triangleFace: Int32Array): void {

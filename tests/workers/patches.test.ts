@@ -57,6 +57,7 @@ describe('the page copy, patched', () => {
     const random = seededRandom(20261125);
     const editsPatched: boolean[] = [];
     const startsPatched: boolean[] = [];
+    const smoothingPatched: boolean[] = [];
     const session = new EditingSession();
     session.adopt(await loadFile(file(), 'model.off'));
     const page = pageSession(session);
@@ -78,6 +79,7 @@ describe('the page copy, patched', () => {
       else if (roll < 0.95) {
         check(page.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 2 } }), `${i}: smooth`);
         check(page.step(), `${i}: smoothing step`);
+        smoothingPatched.push(page.patched.at(-1)!);
         check(random() < 0.5 ? page.cancel() : page.step(), `${i}: smoothing cancelled or done`);
         // nothing has changed at the start: an empty patch, not the whole mesh again
         startsPatched.push(page.patched.at(-3)!);
@@ -93,5 +95,8 @@ describe('the page copy, patched', () => {
     expect(editsPatched.every(Boolean)).toBe(true);
     expect(startsPatched.length).toBeGreaterThan(5);
     expect(startsPatched.every(Boolean)).toBe(true);
+    // a smoothing step moves every vertex: on quads too it is a patch (every face's triangles in one range)
+    expect(smoothingPatched.length).toBeGreaterThan(3);
+    expect(smoothingPatched.every(Boolean)).toBe(true);
   });
 });
