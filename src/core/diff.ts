@@ -5,7 +5,8 @@
  * reports exactly the changes this comparison finds.
  */
 import type { HalfedgeMesh } from './mesh.js';
-import { type ElementKind, type MeshArrayName, meshArrays, slotCount } from './mesh-arrays.js';
+import { type MeshArrayName, type MeshArraySpec, meshArrays, slotCount } from './mesh-arrays.js';
+import type { Phase } from './operation.js';
 
 export type PointerField = 'next' | 'prev' | 'origin' | 'face' | 'halfedge';
 
@@ -38,33 +39,69 @@ export function pointerCopy(mesh: HalfedgeMesh): MeshPointers {
 /**
  * Compares every pointer of two meshes, element by element (ids are compared as they are: an
  * element that exists on one side only counts as changing from or to -1). Deleted elements
- * count as absent. The comparison is the check of change records, and what shows the work of a
- * phase that rewires the whole mesh (a subdivision step), where recording each write would cost more.
+ * count as absent. The comparison is the check of change records and of phase diffs.
  */
 export function diffPointers(before: MeshPointers, after: MeshPointers, limit = 10_000): PointerDiff {
+  return compare(before, after, limit, null);
+}
+
+/**
+ * The pointer diff of a phase, read off what it says it created, rewired and removed (its
+ * `Phase` lists): only those elements are compared, so a phase that only moves vertices costs
+ * nothing, and one that rewires the whole mesh what it wrote. Equal to `diffPointers` of the
+ * whole mesh for every phase of the stepped operations (tested).
+ */
+export function phaseDiff(before: MeshPointers, after: MeshPointers, phase: Phase, limit = 10_000): PointerDiff {
+  if (!phase.created && !phase.rewired && !phase.removed) return { changes: [], total: 0 };
+  const marks = {
+    halfedge: new Uint8Array(Math.max(slotCount(before, 'halfedge'), slotCount(after, 'halfedge'))),
+    vertex: new Uint8Array(Math.max(before.vertexSlots, after.vertexSlots)),
+    face: new Uint8Array(Math.max(before.faceSlots, after.faceSlots)),
+  };
+  for (const ids of [phase.created, phase.rewired, phase.removed]) {
+    if (!ids) continue;
+    for (const h of ids.halfedges ?? []) marks.halfedge[h] = 1;
+    for (const e of ids.edges ?? []) marks.halfedge[2 * e] = marks.halfedge[2 * e + 1] = 1;
+    for (const v of ids.vertices ?? []) marks.vertex[v] = 1;
+    for (const f of ids.faces ?? []) marks.face[f] = 1;
+  }
+  return compare(before, after, limit, marks);
+}
+
+/** The fields of each kind's pointers, in the order a diff lists them. */
+const pointerArrays = Object.fromEntries(
+  (['halfedge', 'vertex', 'face'] as const).map((kind) => [kind, meshArrays.filter((spec) => spec.owner === kind && spec.field)]),
+) as Record<'halfedge' | 'vertex' | 'face', MeshArraySpec[]>;
+
+const deletedArray = { halfedge: 'eDeleted', vertex: 'vDeleted', face: 'fDeleted' } as const;
+
+/** Compares the pointers of the elements marked (null: all), halfedges then vertices then faces, each by id. */
+function compare(before: MeshPointers, after: MeshPointers, limit: number, marks: Record<'halfedge' | 'vertex' | 'face', Uint8Array> | null): PointerDiff {
   const changes: PointerChange[] = [];
   let total = 0;
-  const deleted: Record<string, (mesh: MeshPointers) => Uint8Array> = {
-    halfedge: (mesh) => mesh.eDeleted,
-    vertex: (mesh) => mesh.vDeleted,
-    face: (mesh) => mesh.fDeleted,
-  };
-  const live = (mesh: MeshPointers, kind: ElementKind, id: number) =>
-    id < slotCount(mesh, kind) && deleted[kind](mesh)[kind === 'halfedge' ? id >> 1 : id] === 0;
-  // halfedges (next, prev, origin, face of each in turn), then vertices, then faces: as an edit reports them
   for (const kind of ['halfedge', 'vertex', 'face'] as const) {
-    const fields = meshArrays.filter((spec) => spec.owner === kind && spec.field);
-    const count = Math.max(slotCount(before, kind), slotCount(after, kind));
+    const specs = pointerArrays[kind];
+    const old = specs.map((spec) => before[spec.name] as Int32Array);
+    const now = specs.map((spec) => after[spec.name] as Int32Array);
+    const beforeCount = slotCount(before, kind);
+    const afterCount = slotCount(after, kind);
+    const wasDeleted = before[deletedArray[kind]];
+    const isDeleted = after[deletedArray[kind]];
+    // a halfedge is deleted with its edge
+    const shift = kind === 'halfedge' ? 1 : 0;
+    const marked = marks?.[kind];
+    const count = Math.max(beforeCount, afterCount);
     for (let id = 0; id < count; id++) {
-      const inBefore = live(before, kind, id);
-      const inAfter = live(after, kind, id);
+      if (marked && marked[id] === 0) continue;
+      const inBefore = id < beforeCount && wasDeleted[id >> shift] === 0;
+      const inAfter = id < afterCount && isDeleted[id >> shift] === 0;
       if (!inBefore && !inAfter) continue;
-      for (const { name, field } of fields) {
-        const a = inBefore ? before[name][id] : -1;
-        const b = inAfter ? after[name][id] : -1;
+      for (let k = 0; k < specs.length; k++) {
+        const a = inBefore ? old[k][id] : -1;
+        const b = inAfter ? now[k][id] : -1;
         if (a === b) continue;
         total++;
-        if (changes.length < limit) changes.push({ element: kind, id, field: field!, before: a, after: b });
+        if (changes.length < limit) changes.push({ element: kind, id, field: specs[k].field!, before: a, after: b });
       }
     }
   }

@@ -50,3 +50,12 @@ export function idRange(start: number, end: number): Int32Array {
   for (let i = 0; i < ids.length; i++) ids[i] = start + i;
   return ids;
 }
+
+/** The ids of both lists, each once (the first list's order first): a phase's own list with what its writer saw. */
+export function unionIds(a: ElementIds, b: ElementIds = {}): ElementIds {
+  const union: ElementIds = {};
+  for (const kind of ['vertices', 'edges', 'faces', 'halfedges'] as const) {
+    if (a[kind] || b[kind]) union[kind] = Int32Array.from(new Set([...(a[kind] ?? []), ...(b[kind] ?? [])]));
+  }
+  return union;
+}

@@ -16,13 +16,13 @@ import {
   type BuildReport,
   type ChangeRecord,
   deserializeMesh,
-  diffPointers,
   type HalfedgeMesh,
   invertChange,
   meshFingerprint,
   type Operation,
   type Phase,
   noChange,
+  phaseDiff,
   pointerCopy,
   pointerDiffOf,
   type PointerDiff,
@@ -291,14 +291,15 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const { working } = stepping;
     const positions = stepping.startPositions ? positionsOf(working) : null;
     const before = positions ? null : pointerCopy(working);
-    const phaseDiff = () => (before ? diffPointers(before, working, DIFF_LIMIT) : { changes: [], total: 0 });
+    // what the phase says it created, rewired and removed: only those elements are compared
+    const diffOf = (phase: Phase) => (before ? phaseDiff(before, working, phase, DIFF_LIMIT) : { changes: [], total: 0 });
     const phaseChange = () => (positions ? positionsChange(working, positions) : null);
     let next = stepping.operation.next();
     this.state++;
     if (!next.done) {
       stepping.phases++;
       stepping.phase = next.value;
-      stepping.diff = phaseDiff();
+      stepping.diff = diffOf(next.value);
       if (stepping.total === null || stepping.phases < stepping.total) return phaseChange();
       // that was the last announced phase: let the operation finish now, so no empty step follows
       next = stepping.operation.next();
@@ -306,7 +307,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
         // it had more to do than it announced: show that phase as well, and stop predicting
         stepping.phases++;
         stepping.phase = next.value;
-        stepping.diff = phaseDiff();
+        stepping.diff = diffOf(next.value);
         stepping.total = null;
         return phaseChange();
       }

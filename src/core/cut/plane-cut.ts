@@ -30,7 +30,7 @@ import { splitEdgeAt } from '../edits/split-edge.js';
 import { PointerWriter } from '../edits/writer.js';
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { type ElementIds, type Operation, type Phase, runOperation } from '../operation.js';
+import { type ElementIds, type Operation, type Phase, runOperation, unionIds } from '../operation.js';
 import { capLoops } from './caps.js';
 import { type Plane, type UnitPlane, unitPlane } from './plane.js';
 import { faceSides, separateSides } from './separate.js';
@@ -169,7 +169,7 @@ class PlaneCut {
     const k = crossing.length + onPlane.length;
     mesh.reserve({ vertices: mesh.vertexSlots + 2 * k, edges: mesh.edgeSlots + 5 * k, faces: mesh.faceSlots + 3 * k });
 
-    const w = new PointerWriter(mesh, { record: false });
+    const w = new PointerWriter(mesh, { record: false, rewired: true });
     for (const e of crossing) {
       const a = distance[mesh.heVertex[2 * e]];
       const b = distance[mesh.heVertex[2 * e + 1]];
@@ -178,51 +178,52 @@ class PlaneCut {
     // the new vertices are on the plane: side 0
     this.side = new Int8Array(mesh.vertexSlots);
     this.side.set(side);
-    const { created } = w.result();
+    const { created, rewired } = w.result();
     return {
       name: 'split crossing edges',
       explanation:
         `${crossing.length} edges run from one side to the other; each gets a new vertex where it meets the plane, at the fraction d(a) / (d(a) − d(b)) of the way from a to b, with its attributes blended the same way. ` +
         'The faces beside them gain a corner on the plane, and no edge crosses the plane any more.',
       created,
-      rewired: { edges: Int32Array.from(crossing) },
+      // the edges split, and what the writer saw rewired around them
+      rewired: unionIds({ edges: Int32Array.from(crossing) }, rewired),
     };
   }
 
   splitCrossedFaces(): Phase {
-    const w = new PointerWriter(this.mesh, { record: false });
+    const w = new PointerWriter(this.mesh, { record: false, rewired: true });
     const { split, midpoints } = splitCrossedFaces(w, this.side, this.onPlane, this.plane);
     // the vertices halfway along new edges are on the plane: side 0
     this.onPlane.push(...midpoints);
     const side = this.side;
     this.side = new Int8Array(this.mesh.vertexSlots);
     this.side.set(side);
-    const { created } = w.result();
+    const { created, rewired } = w.result();
     return {
       name: 'split crossed faces',
       explanation:
         `${split.length} faces have corners on both sides; each is cut by new edges between its corners on the plane (a face crossed twice, like a U, gets two; two corners already joined round the other way are joined through a new vertex halfway). ` +
         'Now every face lies on one side, touching the plane at most along its edges and corners.',
       created,
-      rewired: { faces: Int32Array.from(split) },
+      rewired: unionIds({ faces: Int32Array.from(split) }, rewired),
     };
   }
 
   separateSides(): Phase {
     const { mesh } = this;
     this.faceSide = faceSides(mesh, this.side, this.plane);
-    const w = new PointerWriter(mesh, { record: false });
+    const w = new PointerWriter(mesh, { record: false, rewired: true });
     const { cutEdges, newEdges, cutVertices } = separateSides(w, this.onPlane, this.faceSide);
     for (const e of cutEdges) this.cutEdges.push(e);
     for (const e of newEdges) this.cutEdges.push(e);
-    const { created } = w.result();
+    const { created, rewired } = w.result();
     return {
       name: 'separate the sides',
       explanation:
         `The ${cutEdges.length} edges with a face above and a face below become two edges each, and the ${cutVertices.length} vertices on the cut one vertex per fan of faces (${created.vertices?.length ?? 0} copies). ` +
         'Above and below are now separate pieces of surface, each with the cut as a boundary.',
       created,
-      rewired: { edges: Int32Array.from(cutEdges), vertices: Int32Array.from(cutVertices) },
+      rewired: unionIds({ edges: Int32Array.from(cutEdges), vertices: Int32Array.from(cutVertices) }, rewired),
       values: { faces: Float32Array.from(this.faceSide) },
     };
   }
@@ -252,9 +253,9 @@ class PlaneCut {
         explanation: 'Capping is off, so the cut stays open: each side keeps its loops of boundary edges. With capping on, each loop is filled with a flat polygon.',
       };
     }
-    const w = new PointerWriter(this.mesh, { record: false });
+    const w = new PointerWriter(this.mesh, { record: false, rewired: true });
     const { caps, fanned, faces, open } = capLoops(w, this.cutEdges, this.faceSide, this.plane, sides);
-    const { created, removed } = w.result();
+    const { created, removed, rewired } = w.result();
     const fanNote = fanned
       ? ` (${fanned === 1 ? 'one is' : `${fanned} are`} a fan from one corner, as ${fanned === 1 ? 'its outline crosses itself' : 'their outlines cross themselves'} where faces lie almost in the plane)`
       : '';
@@ -268,6 +269,7 @@ class PlaneCut {
         openNote,
       created,
       removed,
+      rewired,
     };
   }
 }

@@ -105,15 +105,17 @@ export class Decimator {
   /**
    * Collapses the cheapest allowed edges, pass after pass, until the mesh has at most `faceGoal`
    * faces or nothing allowed is left. When `survivors` is given, lists the vertex that survived
-   * each collapse into it and returns the ids of what was removed; else returns no ids.
+   * each collapse into it and returns the ids of what was removed and rewired; else no ids.
    */
-  collapseUntil(faceGoal: number, survivors: number[] | null): ElementIds {
-    // one writer for all the passes: no change list, and the removed ids only when listing
-    const w = new PointerWriter(this.mesh, { record: false, ids: survivors !== null });
+  collapseUntil(faceGoal: number, survivors: number[] | null): { removed: ElementIds; rewired?: ElementIds } {
+    // one writer for all the passes: no change list, and the ids only when listing
+    const listing = survivors !== null;
+    const w = new PointerWriter(this.mesh, { record: false, ids: listing, rewired: listing });
     // Bounded: a pass that collapses nothing refuses at least one edge, which stays out until a
     // collapse (or plans every edge again, which needs a collapse since the last time), or ends.
     while (this.mesh.nFaces > faceGoal && !this.exhausted) this.pass(w, faceGoal, survivors);
-    return w.result().removed;
+    const { removed, rewired } = w.result();
+    return { removed, rewired };
   }
 
   /** One pass (see above). */

@@ -133,37 +133,23 @@ function* decimationPhases(mesh: HalfedgeMesh, settings: DecimationSettings, lis
     const before = mesh.nFaces;
     const goal = Math.max(targetFaces, before - Math.max(1, Math.floor(batchFraction * before)));
     const survivors: number[] | null = listIds ? [] : null;
-    const removed = decimator.collapseUntil(goal, survivors);
+    const { removed, rewired } = decimator.collapseUntil(goal, survivors);
     if (mesh.nFaces === before) break;
     yield {
       name: `collapse ${before - mesh.nFaces} faces (${mesh.nFaces} left)`,
       explanation:
         'The cheapest edges collapse, no two sharing a vertex, each merging its two ends into one vertex at its best point; the survivor sums both quadrics, and the edges around it get new costs. ' +
         'A collapse that would make the surface non-manifold (the link condition) or turn a triangle over is skipped, so the mesh stays a valid surface.',
-      ...(survivors ? batchIds(mesh, removed, survivors, decimator) : {}),
+      ...(survivors ? batchIds(mesh, removed, rewired!, survivors, decimator) : {}),
     };
   }
 }
 
-/** A batch's phase fields: what it removed, the survivors it moved and rewired, the new costs. */
-function batchIds(mesh: HalfedgeMesh, removed: ElementIds, survivorList: number[], decimator: Decimator): Partial<Phase> {
+/** A batch's phase fields: what it removed and rewired, the survivors it moved, the new costs. */
+function batchIds(mesh: HalfedgeMesh, removed: ElementIds, rewired: ElementIds, survivorList: number[], decimator: Decimator): Partial<Phase> {
   // survivors that a later collapse of the batch did not take in turn
   const survivors = Int32Array.from(new Set(survivorList)).filter((v) => !mesh.vDeleted[v]).sort();
-  const halfedges: number[] = [];
-  for (const v of survivors) {
-    const start = mesh.vHalfedge[v];
-    let h = start;
-    do {
-      halfedges.push(h);
-      h = mesh.hePrev[h] ^ 1;
-    } while (h !== start);
-  }
-  return {
-    removed,
-    moved: { vertices: survivors },
-    rewired: { vertices: survivors.slice(), halfedges: Int32Array.from(halfedges) },
-    values: { vertices: decimator.cheapestCollapses() },
-  };
+  return { removed, moved: { vertices: survivors }, rewired, values: { vertices: decimator.cheapestCollapses() } };
 }
 
 function requireApplicable(mesh: HalfedgeMesh, options: DecimationOptions): void {

@@ -30,6 +30,11 @@ export interface EditOptions {
   record?: boolean;
   /** List the elements the edit adds and deletes in `created` and `removed` (default true). */
   ids?: boolean;
+  /**
+   * List the elements that existed before and had a pointer written in `rewired` (default false):
+   * what a bulk phase that does not record says it changed, so its diff compares only those.
+   */
+  rewired?: boolean;
 }
 
 /** What a local edit did. */
@@ -42,6 +47,8 @@ export interface EditResult {
   created: ElementIds;
   /** Elements the edit deleted (marked deleted, not compacted: the other ids stay valid). */
   removed: ElementIds;
+  /** Elements that existed before and had a pointer written, when asked for (`rewired: true`). */
+  rewired?: ElementIds;
 }
 
 /** An edit that makes or keeps one vertex of interest: the new vertex of a split, the survivor of a collapse. */
@@ -56,6 +63,7 @@ export class PointerWriter {
   private readonly recorder: ChangeRecorder | null;
   private readonly createdIds: IdLists | null;
   private readonly removedIds: IdLists | null;
+  private readonly rewired: Rewired | null;
 
   constructor(
     readonly mesh: HalfedgeMesh,
@@ -65,33 +73,40 @@ export class PointerWriter {
     const ids = options.ids !== false;
     this.createdIds = ids ? { vertices: [], edges: [], faces: [] } : null;
     this.removedIds = ids ? { vertices: [], edges: [], faces: [] } : null;
+    this.rewired = options.rewired ? new Rewired(mesh) : null;
   }
 
   /** `next(h) = n` and `prev(n) = h`: the two always change together. */
   link(h: number, n: number): void {
     this.recorder?.field(NEXT, h);
     this.recorder?.field(PREV, n);
+    this.rewired?.halfedge(h);
+    this.rewired?.halfedge(n);
     this.mesh.heNext[h] = n;
     this.mesh.hePrev[n] = h;
   }
 
   setOrigin(h: number, v: number): void {
     this.recorder?.field(ORIGIN, h);
+    this.rewired?.halfedge(h);
     this.mesh.heVertex[h] = v;
   }
 
   setFace(h: number, f: number): void {
     this.recorder?.field(FACE, h);
+    this.rewired?.halfedge(h);
     this.mesh.heFace[h] = f;
   }
 
   setVertexHalfedge(v: number, h: number): void {
     this.recorder?.field(VERTEX_HALFEDGE, v);
+    this.rewired?.vertex(v);
     this.mesh.vHalfedge[v] = h;
   }
 
   setFaceHalfedge(f: number, h: number): void {
     this.recorder?.field(FACE_HALFEDGE, f);
+    this.rewired?.face(f);
     this.mesh.fHalfedge[f] = h;
   }
 
@@ -170,7 +185,33 @@ export class PointerWriter {
       record,
       created: toIds(this.createdIds),
       removed: toIds(this.removedIds),
+      rewired: this.rewired?.ids(),
     };
+  }
+}
+
+/** The elements of the mesh as it was when writing began whose pointers were written, each once. */
+class Rewired {
+  private readonly slots: { vertices: number; halfedges: number; faces: number };
+  private readonly seen = { vertices: new Set<number>(), halfedges: new Set<number>(), faces: new Set<number>() };
+
+  constructor(mesh: HalfedgeMesh) {
+    this.slots = { vertices: mesh.vertexSlots, halfedges: mesh.halfedgeSlots, faces: mesh.faceSlots };
+  }
+
+  halfedge(h: number): void {
+    if (h < this.slots.halfedges) this.seen.halfedges.add(h);
+  }
+  vertex(v: number): void {
+    if (v < this.slots.vertices) this.seen.vertices.add(v);
+  }
+  face(f: number): void {
+    if (f < this.slots.faces) this.seen.faces.add(f);
+  }
+
+  ids(): ElementIds {
+    const { vertices, halfedges, faces } = this.seen;
+    return { vertices: Int32Array.from(vertices), halfedges: Int32Array.from(halfedges), faces: Int32Array.from(faces) };
   }
 }
 
