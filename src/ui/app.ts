@@ -412,8 +412,7 @@ export class App {
     const mesh = (this.mesh = snapshot.mesh);
     this.surface.update(snapshot.render, snapshot.renderPatch);
     // while stepping, a phase may colour the vertices by a value it computed
-    const values = snapshot.stepping ? (snapshot.phase?.values?.vertices ?? null) : null;
-    renderValuesLegend(this.byId('values-legend'), this.surface.setVertexValues(values), `${snapshot.phase?.name ?? ''}: colour by value`);
+    renderValuesLegend(this.byId('values-legend'), this.surface.setVertexColours(snapshot.colours), `${snapshot.phase?.name ?? ''}: colour by value`);
     this.inspection.meshChanged(mesh, frame);
     if (frame) {
       this.traversal.stop();

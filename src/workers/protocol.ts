@@ -24,6 +24,7 @@ import {
   type Violation,
 } from '../core/index.js';
 import type { SubdivisionScheme } from '../core/subdivision/index.js';
+import type { ColourScale } from './colour-scale.js';
 import type { EditRequest, OperationRequest } from './operations.js';
 
 export type { EditRequest, OperationRequest };
@@ -164,6 +165,8 @@ export interface Snapshot {
   phase: Phase | null;
   /** Pointers changed by the last phase or edit. */
   diff: PointerDiff | null;
+  /** While stepping, the colours of the per-vertex values the phase reports (null: none, draw the surface plain). */
+  colours: ColourScale | null;
   stepping: SteppingState | null;
   history: { items: HistoryItem[]; index: number };
 }
@@ -269,6 +272,7 @@ export function transferables(value: Snapshot | LoadedFile): ArrayBuffer[] {
     buffers.push(...arrays.map((a) => a.buffer as ArrayBuffer));
   }
   if ('patch' in value && value.patch) buffers.push(...value.patch.render.writes.map((w) => w.data.buffer as ArrayBuffer));
+  if ('colours' in value && value.colours) buffers.push(value.colours.colours.buffer as ArrayBuffer);
   return buffers;
 }
 

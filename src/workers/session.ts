@@ -33,6 +33,7 @@ import {
   TopologyError,
 } from '../core/index.js';
 import { type WriteFormat, writeMeshAsync } from '../core/io/index.js';
+import { type ColourScale, colourScale } from './colour-scale.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
 import { EDIT_ROOM, History } from './history.js';
 import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails, SnapshotVerbs } from './protocol.js';
@@ -276,6 +277,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
       file: info.file,
       phase: stepping ? stepping.phase : info.phase,
       diff: stepping ? stepping.diff : info.diff,
+      colours: vertexColours(mesh, stepping?.phase ?? null),
       stepping: stepping ? { label: stepping.label, phases: stepping.phases, total: stepping.total } : null,
       history: {
         items: this.history.items().map(({ label, vertices, faces, info }) => ({ label, vertices, faces, source: info.source })),
@@ -351,6 +353,12 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     if (!mesh) throw new TopologyError('no mesh is open yet');
     return mesh;
   }
+}
+
+/** The colours of a phase's per-vertex values (one per vertex slot), if it reports them. */
+function vertexColours(mesh: HalfedgeMesh, phase: Phase | null): ColourScale | null {
+  const values = phase?.values?.vertices;
+  return values && values.length === mesh.vertexSlots ? colourScale(values) : null;
 }
 
 /** A copy of the positions of a mesh's vertex slots (to put back, or to record a move from). */

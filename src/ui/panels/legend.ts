@@ -6,7 +6,7 @@
 import { legend, phaseColors, swatchStyle } from '../colors.js';
 import { el, replace } from '../dom.js';
 import type { Convention } from '../records.js';
-import type { ColourScale } from '../scene/colour-map.js';
+import type { ColourScale } from '../../workers/colour-scale.js';
 
 /** The phase being stepped: its title ("Loop subdivision — phase 2 of 4: …") and explanation. */
 export interface LegendPhase {

@@ -24,7 +24,7 @@ import {
 import { type Remote, transfer, wrap } from 'comlink';
 import type { RenderBuffers, RenderPatch } from '../../workers/protocol.js';
 import { colors } from '../colors.js';
-import { type ColourScale, colourScale } from './colour-map.js';
+import type { ColourScale } from '../../workers/colour-scale.js';
 import type { PickingApi, PickingWrite } from './picking.worker.js';
 
 /** Draw vertices as dots up to this many. */
@@ -159,19 +159,23 @@ export class SurfaceLayer {
    * Colours the surface by a value per vertex (what a phase reports), or back to plain with null.
    * Returns the scale, for the legend.
    */
-  setVertexValues(values: ArrayLike<number> | null): ColourScale | null {
+  setVertexColours(scale: ColourScale | null): ColourScale | null {
     const material = this.surface.material;
-    const slots = this.vertices.drawRange.count;
-    const scale = values && values.length === slots ? colourScale(values) : null;
     // plain and plain again: nothing to change (a new shader variant costs a frame)
     if (!scale && !material.vertexColors) return null;
     if (scale) {
-      // as long as the positions (which keep room for more vertices)
-      const colours = new Float32Array(this.faces.getAttribute('position').array.length);
-      colours.set(scale.colours);
-      this.faces.setAttribute('color', new BufferAttribute(colours, 3));
-    }
-    else this.faces.deleteAttribute('color');
+      // as long as the positions (which keep room for more vertices); the next phase's colours
+      // go into the same buffer
+      const room = this.faces.getAttribute('position').array.length;
+      const held = this.faces.getAttribute('color') as BufferAttribute | undefined;
+      const attribute = held?.array.length === room ? held : new BufferAttribute(new Float32Array(room), 3);
+      (attribute.array as Float32Array).set(scale.colours);
+      attribute.clearUpdateRanges();
+      attribute.addUpdateRange(0, scale.colours.length);
+      attribute.needsUpdate = true;
+      if (attribute !== held) this.faces.setAttribute('color', attribute);
+    } else this.faces.deleteAttribute('color');
+    if (material.vertexColors === (scale !== null)) return scale;
     // coloured by value, both sides show the colours
     material.vertexColors = scale !== null;
     material.color.set(scale ? '#ffffff' : colors.surface);
