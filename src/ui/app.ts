@@ -27,7 +27,7 @@ import { RecordTables } from './panels/tables.js';
 import { TraversalPanel } from './panels/traversal.js';
 import { renderBreadcrumb, renderWalkButtons } from './panels/walk.js';
 import type { Convention } from './records.js';
-import { ArrowLayer, halfedgesNear, MAX_ARROWS } from './scene/arrows.js';
+import { ArrowLayer } from './scene/arrows.js';
 import { emptyHighlight, HighlightLayer, type HighlightSpec } from './scene/highlight.js';
 import { pick, type PickFilter } from './scene/picking.js';
 import { PlaneGizmo } from './scene/plane-gizmo.js';
@@ -35,6 +35,7 @@ import { SurfaceLayer } from './scene/surface.js';
 import { Viewer } from './scene/viewer.js';
 import { handleKey } from './keys.js';
 import { Inspection } from './inspection.js';
+import { ViewDetail } from './view-detail.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, openedEntry, type ReplayStep, replayable, type ViewState } from './share.js';
@@ -47,10 +48,6 @@ export interface SampleModel {
 
 /** Label every vertex and face when the mesh has at most this many of them. */
 const MAX_ID_LABELS = 400;
-/** Edge lines are drawn while a typical edge is at least this many pixels long on screen… */
-const MIN_EDGE_PIXELS = 3;
-/** …and the arrows while it is at least this many. */
-const MIN_ARROW_EDGE_PIXELS = 5;
 
 /** How long the changes must pause before the full counts and checks are asked for. */
 const DETAILS_AFTER_MS = 400;
@@ -89,12 +86,6 @@ export class App {
   private sample: string | null = null;
   /** The files the user last opened (picked or dropped), to open again with another weld distance. */
   private userFiles: File[] | null = null;
-  /** True while the arrows are hidden for being too small at this zoom (see fitDetail). */
-  private arrowsHidden = false;
-  /** Calls of refreshArrows so far: one that waited must not undo a later one. */
-  private arrowRefreshes = 0;
-  /** The face last found in the middle of the view (-1: none yet), which arrows grow from without a selection. */
-  private viewFocus = -1;
   showIds = false;
   /** The last message shown to the student (an error, a walk that led nowhere…). */
   message = '';
@@ -119,6 +110,7 @@ export class App {
   /** The Practice tab, loaded with its editor and grader when first asked for (see `practice()`). */
   private practicePanel: Promise<PracticePanel> | null = null;
   private readonly gizmo: PlaneGizmo;
+  private readonly detail: ViewDetail;
   private markReady!: () => void;
   private readonly root: Document | ShadowRoot;
   private readonly frame: HTMLElement;
@@ -143,8 +135,14 @@ export class App {
     this.viewer.add(this.surface.group, this.arrows.group, this.phaseLayer.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
     this.gizmo = new PlaneGizmo(this.viewer, (plane) => this.operations.setPlane(plane));
     this.viewer.add(this.gizmo.group);
-    this.viewer.controls.addEventListener('end', () => this.refreshArrowsIfPartial());
-    this.viewer.beforeDraw = () => this.fitDetail();
+    this.detail = new ViewDetail(this.viewer, this.surface, this.arrows, this.byId('arrow-note'), () => ({
+      mesh: this.mesh,
+      stats: this.snapshot?.stats ?? null,
+      inspection: this.inspection,
+      scale: this.scale,
+    }));
+    this.viewer.controls.addEventListener('end', () => this.detail.refreshIfPartial());
+    this.viewer.beforeDraw = () => this.detail.fit();
     // labels keep off the overlays on the view
     this.viewer.labelObstacles = () =>
       ['legend', 'hud', 'status', 'values-legend'].flatMap((id) => {
@@ -422,7 +420,7 @@ export class App {
       this.frameMesh();
     }
     // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
-    void this.refreshArrows(snapshot.renderPatch !== null);
+    void this.detail.refresh(snapshot.renderPatch !== null);
     this.tables.setMesh(mesh, this.inspection.convention);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
@@ -506,7 +504,7 @@ export class App {
     this.surface.setEmphasis(this.scale);
     // the room looks at the view: the record tables fold to their title (D opens them)
     this.showTables(!on);
-    void this.refreshArrows();
+    void this.detail.refresh();
     this.drawSelection();
     // the view changed size with the layout: fit the mesh to it once the layout has settled
     requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
@@ -747,7 +745,7 @@ export class App {
   // -----------------------------------------------------------------------------------------------
 
   private afterSelect(): void {
-    this.refreshArrowsIfPartial();
+    this.detail.refreshIfPartial();
     this.drawSelection();
     this.drawPanels();
     this.tables.reveal(this.inspection.selection);
@@ -788,75 +786,6 @@ export class App {
         seamsShown: this.seamsShown,
       });
     }
-  }
-
-  /** All arrows on a mesh of modest size; on a big one, those near the selection or the view. */
-  private async refreshArrows(sameView = false): Promise<void> {
-    const mesh = this.mesh;
-    if (!mesh) return;
-    const call = ++this.arrowRefreshes;
-    if (mesh.nHalfedges <= MAX_ARROWS) {
-      this.arrows.update(mesh, null, this.scale);
-    } else {
-      // finding the face in the middle of the view may wait for the picking worker's hierarchy
-      const focus = await this.focusFace(sameView);
-      if (call !== this.arrowRefreshes) return; // a later refresh (a selection, a new mesh) has run
-      this.arrows.update(mesh, focus < 0 ? new Int32Array(0) : halfedgesNear(mesh, focus), this.scale);
-    }
-    this.showArrowNote();
-    this.viewer.requestRender();
-  }
-
-  /**
-   * Before each frame: edge lines and arrows only a few pixels long blur into a dark mass that
-   * hides the surface, so they wait until the view zooms in (the selection stays highlighted).
-   * And the backs of the faces are not drawn where none can show (one closed surface facing out).
-   */
-  private fitDetail(): void {
-    const stats = this.snapshot?.stats;
-    this.surface.cullBackFaces(stats?.closed === true && stats.components === 1 && (stats.volume ?? 0) > 0, this.viewer.camera.position);
-    // no edges (a point set), or only edges of no length: nothing that could crowd the view
-    const pixels = this.surface.edgeLength > 0 ? this.surface.edgeLength * this.viewer.pixelsPerUnit() : Infinity;
-    this.surface.showEdges(pixels >= MIN_EDGE_PIXELS);
-    const arrowsHidden = pixels < MIN_ARROW_EDGE_PIXELS;
-    this.arrows.group.visible = !arrowsHidden;
-    if (arrowsHidden !== this.arrowsHidden) {
-      this.arrowsHidden = arrowsHidden;
-      this.showArrowNote();
-    }
-  }
-
-  /** Says which arrows are drawn when not all of them are. */
-  private showArrowNote(): void {
-    const note = this.byId('arrow-note');
-    const mesh = this.mesh;
-    note.hidden = !mesh || (!this.arrowsHidden && mesh.nHalfedges <= MAX_ARROWS);
-    if (!mesh || note.hidden) return;
-    note.textContent = this.arrowsHidden
-      ? `Zoom in to see the halfedge arrows: at this zoom an edge is under ${MIN_ARROW_EDGE_PIXELS} pixels long.`
-      : `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${this.inspection.selection ? 'selection' : 'centre of the view'}.`;
-  }
-
-  private refreshArrowsIfPartial(): void {
-    if (this.mesh && this.mesh.nHalfedges > MAX_ARROWS) void this.refreshArrows();
-  }
-
-  /**
-   * The face to grow the drawn arrows from: the selection's, or the one in the middle of the view
-   * (with `sameView`, the one found last time while it lives).
-   */
-  private async focusFace(sameView: boolean): Promise<number> {
-    const mesh = this.mesh!;
-    const selected = this.inspection.focusFace(mesh);
-    if (selected >= 0) return selected;
-    const last = this.viewFocus;
-    if (sameView && last >= 0 && last < mesh.faceSlots && mesh.fDeleted[last] === 0) return last;
-    const { width, height } = this.viewer.size();
-    const hit = await this.surface.raycast(this.viewer.ray(width / 2, height / 2));
-    this.viewFocus = hit ? hit.face : -1;
-    if (hit) return hit.face;
-    for (const f of mesh.faces()) return f;
-    return -1;
   }
 
   private showProgress(label: string, fraction: number): void {
