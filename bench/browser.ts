@@ -8,7 +8,8 @@
  *   - the size of the app's JavaScript, gzipped: what the first load needs, and the Practice tab's, loaded when it opens;
  *   - the same for a page with one <halfedge-view> element (its own bundle, dist/element);
  *   - on the 1.31M-triangle icosphere: opening it, then flip, split, collapse, undo, redo and one
- *     smoothing step, each from the call to the drawn result and as a share of the open.
+ *     smoothing step, each from the call to the drawn result and as a share of the open; then
+ *     every phase of one Loop and one Catmull-Clark level, each with whether its pointer diff is shown.
  *
  * Prints one JSON object per line with --json (`case`, `size`, `ms`, plus the case's own fields).
  */
@@ -114,12 +115,25 @@ try {
     ['redo', () => page.evaluate(() => window.halfedgeLab.redo()), 0.05],
   ];
   for (const [name, act, share] of edits) {
-    const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, async () => void act());
+    const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, async () => void act(), 50);
     versus(name, timed.ms, share);
   }
   await page.evaluate(() => window.halfedgeLab.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 3 } }));
-  const smoothStep = await measure(page, 'smoothing-step-icosphere-1310k', 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()));
+  const smoothStep = await measure(page, 'smoothing-step-icosphere-1310k', 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()), 50);
   versus('smoothing-step', smoothStep.ms, 0.15);
+  await page.evaluate(() => window.halfedgeLab.cancel());
+
+  // every phase of one Loop and one Catmull-Clark level on the icosphere, each with its pointer diff
+  for (const scheme of ['loop', 'catmull-clark'] as const) {
+    await page.evaluate((scheme) => window.halfedgeLab.start({ kind: 'subdivide', scheme }), scheme);
+    for (let phase = 1; ; phase++) {
+      const timed = await measure(page, `${scheme}-phase-${phase}-icosphere-1310k`, 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()));
+      const state = await page.evaluate(() => window.halfedgeLab.state());
+      report({ case: `${scheme}-phase-${phase}-diff`, size: 1_310_720, ms: timed.ms, phase: state.phase?.name ?? null, diffShown: state.phase?.diff !== null, diffTotal: state.phase?.diff?.total ?? null });
+      if (!state.stepping) break;
+    }
+    await page.evaluate(() => window.halfedgeLab.undo());
+  }
 } finally {
   await browser.close();
   server.kill();
@@ -130,7 +144,7 @@ try {
  * Times `act` from its start to the first frame drawn after the next snapshot arrives, and the
  * longest main-thread tasks before that snapshot arrived (the worker working) and after.
  */
-async function measure(page: import('@playwright/test').Page, name: string, size: number, act: () => Promise<void>) {
+async function measure(page: import('@playwright/test').Page, name: string, size: number, act: () => Promise<void>, limitLongestTaskMs = 100) {
   const before = await page.evaluate(() => {
     (window as unknown as { longTasks: unknown[] }).longTasks = [];
     return { version: window.halfedgeLab.state().version, t: performance.now() };
@@ -159,7 +173,7 @@ async function measure(page: import('@playwright/test').Page, name: string, size
     ms: Math.round(after.drawnAt - before.t),
     longestTaskWhileWorkerWorksMs: longest(during),
     longestTaskOverallMs: longest(tasks),
-    limitLongestTaskMs: 100,
+    limitLongestTaskMs,
   };
   report(result);
   return result;
