@@ -46,7 +46,7 @@ import { reloadDifference } from './reload.js';
 import { type CaseOutcome, caseSeed, type FuzzTarget } from './target.js';
 
 /** Start meshes: closed and open, triangles, quads and polygons, repaired ones too. */
-const shapes: Record<string, () => PolygonSoup> = {
+export const shapes: Record<string, () => PolygonSoup> = {
   tetrahedron,
   cube,
   'torus 4×3': () => torus(4, 3),
@@ -147,15 +147,32 @@ export class Step implements fc.Command<object, Real> {
 const pick = fc.nat();
 const fraction = fc.double({ min: 0.05, max: 0.95, noNaN: true });
 
+/** An edit of one element, the `k`-th live edge (`e`) or face (`f`), with its predicate. */
+export interface ElementEdit {
+  name: string;
+  on: 'e' | 'f';
+  can: (mesh: HalfedgeMesh, id: number) => string | null;
+  edit: (mesh: HalfedgeMesh, id: number) => EditResult;
+}
+
+/** The local edits that need nothing but their element. */
+export const elementEdits: ElementEdit[] = [
+  { name: 'flip', on: 'e', can: canFlipEdge, edit: flipEdge },
+  { name: 'split-triangulated', on: 'e', can: canSplitEdgeTriangulated, edit: splitEdgeTriangulated },
+  { name: 'collapse', on: 'e', can: canCollapseEdge, edit: collapseEdge },
+  { name: 'merge', on: 'e', can: canMergeFaces, edit: mergeFaces },
+  { name: 'poke', on: 'f', can: canPokeFace, edit: pokeFace },
+  { name: 'triangulate', on: 'f', can: canTriangulateFace, edit: triangulateFace },
+];
+
+const elementCommand = ({ name, on, can, edit }: ElementEdit) => pick.map((k) => new Step(name, (m) => elementStep(m, on, k, name, can, edit)));
+const [flip, ...othersOnOneElement] = elementEdits.map(elementCommand);
+
 /** Every edit and operation, each with the choices it needs. */
 export const editCommands: Array<fc.Arbitrary<Step>> = [
-  pick.map((k) => new Step('flip', (m) => elementStep(m, 'e', k, 'flip', canFlipEdge, flipEdge))),
+  flip,
   fc.tuple(pick, fraction).map(([k, t]) => new Step('split', (m) => elementStep(m, 'e', k, 'split', (mesh, e) => canSplitEdge(mesh, e, t), (mesh, e) => splitEdge(mesh, e, { t })))),
-  pick.map((k) => new Step('split-triangulated', (m) => elementStep(m, 'e', k, 'split-triangulated', canSplitEdgeTriangulated, splitEdgeTriangulated))),
-  pick.map((k) => new Step('collapse', (m) => elementStep(m, 'e', k, 'collapse', canCollapseEdge, collapseEdge))),
-  pick.map((k) => new Step('merge', (m) => elementStep(m, 'e', k, 'merge', canMergeFaces, mergeFaces))),
-  pick.map((k) => new Step('poke', (m) => elementStep(m, 'f', k, 'poke', canPokeFace, pokeFace))),
-  pick.map((k) => new Step('triangulate', (m) => elementStep(m, 'f', k, 'triangulate', canTriangulateFace, triangulateFace))),
+  ...othersOnOneElement,
   fc.tuple(pick, pick, pick).map(([k, i, j]) => new Step('split-face', (m) => splitFaceStep(m, k, i, j))),
   fc.constant(null).map(() => new Step('triangulate-all', (m) => ({ name: 'triangulate-all', refusal: null, apply: () => void triangulateMesh(m, { record: false }) }))),
   fc.constantFrom<SubdivisionScheme>('loop', 'catmull-clark', 'butterfly', 'sqrt3').map(
@@ -179,8 +196,13 @@ function elementStep(
   can: (mesh: HalfedgeMesh, id: number) => string | null,
   edit: (mesh: HalfedgeMesh, id: number) => EditResult,
 ): Plan {
-  const id = nth(kind === 'e' ? mesh.edges() : mesh.faces(), k);
+  const id = elementOf(mesh, kind, k);
   return id === -1 ? null : { name: `${name} ${kind}${id}`, refusal: can(mesh, id), apply: () => edit(mesh, id) };
+}
+
+/** The `k`-th live edge (`e`) or face (`f`), modulo their count, or -1 when there is none. */
+export function elementOf(mesh: HalfedgeMesh, kind: 'e' | 'f', k: number): number {
+  return nth(kind === 'e' ? mesh.edges() : mesh.faces(), k);
 }
 
 function splitFaceStep(mesh: HalfedgeMesh, k: number, i: number, j: number): Plan {

@@ -205,6 +205,44 @@ export function noChange(mesh: HalfedgeMesh): ChangeRecord {
   };
 }
 
+/** Elements by kind, each list in increasing order (an edge is listed as its two halfedges). */
+export interface TouchedElements {
+  vertices: Int32Array;
+  halfedges: Int32Array;
+  faces: Int32Array;
+}
+
+/**
+ * The elements a change touches, for a check of what it may have broken (`validateAround`): each
+ * element the record writes a pointer or a flag of, each element such a pointer names before and
+ * after the write (a halfedge's old and new `next`, a vertex's old and new halfedge), and the
+ * slots the change brings into use or gives up. Attribute values (positions) are left out: no
+ * invariant reads them. The same in either direction, so it serves an undo as well.
+ */
+export function touchedElements(record: ChangeRecord): TouchedElements {
+  const ids = { vertex: new Set<number>(), halfedge: new Set<number>(), face: new Set<number>() };
+  const touch = (kind: ElementKind, id: number) => {
+    if (id === -1) return;
+    if (kind !== 'edge') ids[kind].add(id);
+    else ids.halfedge.add(2 * id).add(2 * id + 1);
+  };
+  const { array, index, old, new: now } = record.pointers;
+  for (let i = 0; i < array.length; i++) {
+    const { owner, refers } = meshArrays[array[i]];
+    touch(owner, index[i]);
+    if (refers) {
+      touch(refers, old[i]);
+      touch(refers, now[i]);
+    }
+  }
+  for (const kind of ['vertex', 'halfedge', 'face'] as const) {
+    const [from, to] = [slotCount(record.before, kind), slotCount(record.after, kind)].sort((a, b) => a - b);
+    for (let id = from; id < to; id++) touch(kind, id);
+  }
+  const sorted = (set: Set<number>) => Int32Array.from(set).sort();
+  return { vertices: sorted(ids.vertex), halfedges: sorted(ids.halfedge), faces: sorted(ids.face) };
+}
+
 /** The same change the other way round: applying it forwards undoes the original. */
 export function invertChange(record: ChangeRecord): ChangeRecord {
   const { array, index, old, new: now } = record.pointers;

@@ -23,6 +23,7 @@ export * from './seams.js';
 export * from './stats.js';
 export * from './triangles.js';
 export * from './validate.js';
+export * from './validate-around.js';
 export * from './io/index.js';
 export * from './edits/index.js';
 export * from './cut/index.js';
