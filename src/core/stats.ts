@@ -3,8 +3,10 @@
  * characteristic χ = V − E + F and, for each orientable component, its genus from
  * χ = 2 − 2g − b (b = number of boundary loops).
  */
+import type { ChangeRecord } from './change.js';
 import { boundingBox, type BoundingBox, signedVolume, surfaceArea, triangleQuality, type TriangleQuality } from './geometry.js';
 import type { HalfedgeMesh } from './mesh.js';
+import { meshArrayIndex, meshArrays } from './mesh-arrays.js';
 import type { BuildReport } from './report.js';
 
 export interface ComponentStats {
@@ -158,6 +160,43 @@ export function meshStats(mesh: HalfedgeMesh, report?: BuildReport): MeshStats {
     triangleQuality: triangleQuality(mesh),
     componentDetails: components,
   };
+}
+
+const { heFace: FACE, eDeleted: EDGE_DELETED } = meshArrayIndex;
+
+/**
+ * How far a change moved the count of boundary edges (`MeshStats.boundaryEdges`), read off its
+ * record instead of a pass over the mesh. An edge is a boundary edge while it is live and one of
+ * its halfedges has no face, so only the edges whose faces or flag the record writes can have
+ * changed; an edge the change brings into use or gives up is among them, since an edge borders a
+ * face. `mesh` is the mesh after the change.
+ * @example stats.boundaryEdges += boundaryEdgesChange(mesh, splitEdge(mesh, e).record!);
+ */
+export function boundaryEdgesChange(mesh: HalfedgeMesh, record: ChangeRecord): number {
+  const { before, after } = record;
+  const { array, index, old } = record.pointers;
+  const faceBefore = new Map<number, number>();
+  const deletedBefore = new Map<number, number>();
+  const edges = new Set<number>();
+  for (let i = 0; i < array.length; i++) {
+    if (array[i] === FACE) {
+      faceBefore.set(index[i], old[i]);
+      edges.add(index[i] >> 1);
+    } else if (array[i] === EDGE_DELETED) {
+      deletedBefore.set(index[i], old[i]);
+      edges.add(index[i]);
+    }
+  }
+
+  // a field the record does not write was as it is now; on a slot the change gave up, as a new
+  // element starts (the change that brought it into use left it so: see applyChange)
+  const faceThen = (h: number) => faceBefore.get(h) ?? (h < 2 * after.edgeSlots ? mesh.heFace[h] : meshArrays[FACE].initial);
+  const deletedThen = (e: number) => deletedBefore.get(e) ?? (e < after.edgeSlots ? mesh.eDeleted[e] : meshArrays[EDGE_DELETED].initial);
+  const wasBoundary = (e: number) => e < before.edgeSlots && deletedThen(e) === 0 && (faceThen(2 * e) === -1 || faceThen(2 * e + 1) === -1);
+  const isBoundary = (e: number) => e < after.edgeSlots && mesh.eDeleted[e] === 0 && (mesh.heFace[2 * e] === -1 || mesh.heFace[2 * e + 1] === -1);
+  let change = 0;
+  for (const e of edges) change += Number(isBoundary(e)) - Number(wasBoundary(e));
+  return change;
 }
 
 function nonOrientableIncidents(report: BuildReport | undefined) {

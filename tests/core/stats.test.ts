@@ -1,11 +1,15 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import {
+  applyChange,
+  boundaryEdgesChange,
   buildMesh,
   cube,
   faceArea,
   faceCentroid,
   faceNormal,
   grid,
+  invertChange,
   meshStats,
   mergeSoups,
   signedVolume,
@@ -18,6 +22,7 @@ import {
   uvSphere,
   vertexNormals,
 } from '../../src/index.js';
+import { editSequences, runEdits } from './edit-sequences.js';
 
 describe('meshStats', () => {
   it('measures the unit cube exactly', () => {
@@ -104,5 +109,26 @@ describe('normals and per-face measures', () => {
     const { mesh } = buildMesh(grid(4, 4));
     expect(signedVolume(mesh)).toBe(0);
     expect(surfaceArea(mesh)).toBeCloseTo(1, 14);
+  });
+});
+
+describe('boundaryEdgesChange (seed 20261126)', () => {
+  it('tells how far each of random edits and its undo moved the boundary-edge count, on open meshes too', () => {
+    let moved = 0;
+    fc.assert(
+      fc.property(editSequences, (sequence) => {
+        runEdits(sequence, (mesh, record, step) => {
+          const after = meshStats(mesh).boundaryEdges;
+          applyChange(mesh, record, 'backward');
+          const before = meshStats(mesh).boundaryEdges;
+          expect(boundaryEdgesChange(mesh, invertChange(record)), `${step}, undone`).toBe(before - after);
+          applyChange(mesh, record, 'forward');
+          expect(boundaryEdgesChange(mesh, record), step).toBe(after - before);
+          if (after !== before) moved++;
+        });
+      }),
+      { seed: 20261126, numRuns: 300 },
+    );
+    expect(moved).toBeGreaterThan(100);
   });
 });
