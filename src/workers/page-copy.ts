@@ -9,7 +9,8 @@ import type { RenderBuffers, RenderPatch, Snapshot, SnapshotDetails } from './pr
 /**
  * A snapshot as the page holds it: the mesh and the render buffers are the page's own, changed in
  * place when a snapshot comes as a patch (`renderPatch` then lists the ranges to upload again).
- * `pending`: the counts beyond V, E, F and the checks are the last full pass's until `details()`.
+ * `pending`: the counts beyond V, E, F, χ and the boundary edges are the last full pass's until
+ * `details()`, and `problems` the check of what the change touched (see `Snapshot.details`).
  */
 export interface PageSnapshot extends Omit<Snapshot, 'mesh' | 'render' | 'patch' | 'details'>, Omit<SnapshotDetails, 'version'> {
   mesh: HalfedgeMesh;

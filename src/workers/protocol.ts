@@ -154,8 +154,9 @@ export interface Snapshot {
   patch: MeshPatch | null;
   /**
    * Counts, checks and the operations that apply. `pending` after a change small enough to patch:
-   * then the counts (V, E, F, χ) are exact and the rest is as the last full check found it, until
-   * `details()` brings the full check of this snapshot.
+   * then the counts (V, E, F, χ, boundary edges) are exact, `problems` is the check of what the
+   * change touched (on a mesh that had problems before, those problems), and the rest is as the
+   * last full pass found it, until `details()` brings the full pass of this snapshot.
    */
   details: SnapshotDetails & { pending: boolean };
   /** The build report of the file this mesh came from (until the first edit). */

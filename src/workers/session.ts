@@ -78,7 +78,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
   /** The version and state of the last snapshot sent: what the page holds. */
   private sent: { version: number; state: number } | null = null;
   private readonly layout = new RenderLayout();
-  /** The last full pass of counts and checks. */
+  /** The counts and checks of the last snapshot sent: a full pass, or patched (see `patchedDetails`). */
   private lastDetails: SnapshotDetails | null = null;
   private progress: ProgressListener | null = null;
 
@@ -266,13 +266,13 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const patch = render && this.sent ? { from: this.sent.version, change: change!, render } : null;
     this.sent = { version, state: this.state };
     const report = stepping ? null : info.report;
-    if (!patch) this.lastDetails = fullDetails(mesh, report, version);
+    this.lastDetails = patch ? patchedDetails(mesh, patch.change, this.lastDetails!, version) : fullDetails(mesh, report, version);
     return {
       version,
       mesh: patch ? null : serializeMesh(mesh, EDIT_ROOM),
       render: patch ? null : this.layout.full(mesh),
       patch,
-      details: patch ? patchedDetails(mesh, this.lastDetails!, version) : { ...this.lastDetails!, pending: false },
+      details: { ...this.lastDetails, pending: patch !== null },
       report,
       file: info.file,
       phase: stepping ? stepping.phase : info.phase,

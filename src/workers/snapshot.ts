@@ -1,28 +1,49 @@
 /**
  * The counts and checks a snapshot carries: everything that takes a pass over the whole mesh,
  * computed here in the worker so that the page's thread only shows them. After a change small
- * enough to patch, the exact counts come at once and the full pass on request (`details()`),
- * so the edit is drawn without waiting for it.
+ * enough to patch, what the change's record tells exactly comes at once (the counts of elements,
+ * χ, the boundary edges, the check of what the change touched) and the full pass on request
+ * (`details()`), so the edit is drawn, and checked, without waiting for it.
  */
-import { type BuildReport, cannotDecimate, type HalfedgeMesh, meshStats, validate } from '../core/index.js';
+import { boundaryEdgesChange, type BuildReport, cannotDecimate, type ChangeRecord, type HalfedgeMesh, meshStats, validate, validateChange } from '../core/index.js';
 import { cannotSmooth } from '../core/smoothing/index.js';
 import { cannotSubdivide, subdivisionSchemes } from '../core/subdivision/index.js';
-import type { Snapshot, SnapshotDetails } from './protocol.js';
+import type { SnapshotDetails } from './protocol.js';
+
+/** Violations a snapshot lists at most. */
+const PROBLEMS_LIMIT = 200;
 
 export function fullDetails(mesh: HalfedgeMesh, report: BuildReport | null, version: number): SnapshotDetails {
   return {
     version,
     stats: meshStats(mesh, report ?? undefined),
-    problems: validate(mesh, { limit: 200 }),
+    problems: validate(mesh, { limit: PROBLEMS_LIMIT }),
     unavailable: unavailable(mesh),
   };
 }
 
-/** The counts that follow from the slots (exact), the rest as the last full pass found them. */
-export function patchedDetails(mesh: HalfedgeMesh, last: SnapshotDetails, version: number): Snapshot['details'] {
+/**
+ * The details after `change`, from those of the snapshot before it (`previous`): V, E, F, χ and
+ * the boundary edges exact, the problems those the local check finds where the change wrote; the
+ * rest (boundary loops, components, genus, the operations that apply) as the last full pass found
+ * them, for `details()` to bring up to date.
+ */
+export function patchedDetails(mesh: HalfedgeMesh, change: ChangeRecord, previous: SnapshotDetails, version: number): SnapshotDetails {
   const { nVertices: vertices, nEdges: edges, nFaces: faces } = mesh;
-  const stats = { ...last.stats, vertices, edges, faces, halfedges: 2 * edges, eulerCharacteristic: vertices - edges + faces };
-  return { ...last, version, stats, pending: true };
+  const stats = {
+    ...previous.stats,
+    vertices,
+    edges,
+    faces,
+    halfedges: 2 * edges,
+    eulerCharacteristic: vertices - edges + faces,
+    boundaryEdges: previous.stats.boundaryEdges + boundaryEdgesChange(mesh, change),
+  };
+  // The local check vouches for the whole mesh only when the mesh before was sound. One that was
+  // not (a practice state) keeps the problems it had, unchecked, until the full pass: simpler than
+  // sorting out which of them the change may have mended, and they are marked pending.
+  const problems = previous.problems.length > 0 ? previous.problems : validateChange(mesh, change, { limit: PROBLEMS_LIMIT });
+  return { ...previous, version, stats, problems };
 }
 
 /** The checks of every face that the page would otherwise run on its thread. */

@@ -1,8 +1,11 @@
 /**
  * A session as the page sees it, without a worker: every snapshot is taken into one `PageCopy`
  * (whole or patched, as the app's client does), and a pending snapshot gets its full details at
- * once (as the app asks for them), so tests read real counts and checks.
+ * once (as the app asks for them), so tests read real counts and checks. And a random local edit
+ * for such a session to apply.
  */
+import type { HalfedgeMesh } from '../../src/core/mesh.js';
+import { cannotEdit, type EditRequest } from '../../src/workers/operations.js';
 import type { Snapshot } from '../../src/workers/protocol.js';
 import { PageCopy, type PageSnapshot } from '../../src/workers/page-copy.js';
 import type { EditingSession } from '../../src/workers/session.js';
@@ -48,4 +51,23 @@ export function pageSession(session: EditingSession): PageSession {
     redo: () => take(session.redo()),
     jump: (index) => take(session.jump(index)),
   };
+}
+
+/** A local edit that applies to `mesh`, on an element chosen by `random`, or null after 50 misses. */
+export function randomEdit(mesh: HalfedgeMesh, random: () => number): EditRequest | null {
+  for (let attempt = 0; attempt < 50; attempt++) {
+    const edge = Math.floor(random() * mesh.edgeSlots);
+    const face = Math.floor(random() * mesh.faceSlots);
+    const kinds: EditRequest[] = [
+      { kind: 'flip-edge', edge },
+      { kind: 'split-edge', edge, triangulate: true },
+      { kind: 'collapse-edge', edge },
+      { kind: 'poke-face', face },
+      { kind: 'erase-edge', edge },
+      { kind: 'split-edge', edge },
+    ];
+    const request = kinds[Math.floor(random() * kinds.length)];
+    if (!cannotEdit(mesh, request)) return request;
+  }
+  return null;
 }

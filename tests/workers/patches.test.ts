@@ -4,14 +4,13 @@
  * (every array equal) and its render buffers draw what a fresh layout of the mesh draws.
  */
 import { describe, expect, it } from 'vitest';
-import { type HalfedgeMesh, meshFingerprint, seededRandom, torus, uvSphere, writeSoup } from '../../src/index.js';
+import { meshFingerprint, seededRandom, torus, uvSphere, writeSoup } from '../../src/index.js';
 import { loadFile } from '../../src/workers/load.js';
-import { cannotEdit, type EditRequest } from '../../src/workers/operations.js';
 import type { PageSnapshot } from '../../src/workers/page-copy.js';
 import type { RenderBuffers } from '../../src/workers/protocol.js';
 import { RenderLayout } from '../../src/workers/render.js';
 import { EditingSession } from '../../src/workers/session.js';
-import { pageSession } from './page-session.js';
+import { pageSession, randomEdit } from './page-session.js';
 
 /** What the buffers draw: sorted triangles (as sorted corner triples) with their faces, sorted edges, the dots. */
 function drawn(render: RenderBuffers) {
@@ -29,24 +28,6 @@ function drawn(render: RenderBuffers) {
   const dots = new Set(Array.from(render.vertices.subarray(0, render.counts.vertices)));
   const positions = Array.from(render.positions.subarray(0, 3 * render.counts.vertices));
   return { triangles: triangles.sort(), edges: edges.sort(), dots: [...dots].sort((a, b) => a - b), positions };
-}
-
-function randomEdit(mesh: HalfedgeMesh, random: () => number): EditRequest | null {
-  for (let attempt = 0; attempt < 50; attempt++) {
-    const edge = Math.floor(random() * mesh.edgeSlots);
-    const face = Math.floor(random() * mesh.faceSlots);
-    const kinds: EditRequest[] = [
-      { kind: 'flip-edge', edge },
-      { kind: 'split-edge', edge, triangulate: true },
-      { kind: 'collapse-edge', edge },
-      { kind: 'poke-face', face },
-      { kind: 'erase-edge', edge },
-      { kind: 'split-edge', edge },
-    ];
-    const request = kinds[Math.floor(random() * kinds.length)];
-    if (!cannotEdit(mesh, request)) return request;
-  }
-  return null;
 }
 
 describe('the page copy, patched', () => {

@@ -1,11 +1,17 @@
 import { describe, expect, it } from 'vitest';
 import {
+  annulus,
   buildMesh,
+  canFlipEdge,
   cube,
   deserializeMesh,
   disk,
   diffPointers,
+  faceVertices,
+  flipEdge,
+  meshStats,
   ParseError,
+  seededRandom,
   serializeMesh,
   soupFromArrays,
   subdivide,
@@ -14,14 +20,17 @@ import {
   torus,
   uvSphere,
   validate,
+  validateChange,
+  vertexAdjacentVertices,
   writeSoup,
 } from '../../src/index.js';
 import { loadFile } from '../../src/workers/load.js';
+import { PageCopy } from '../../src/workers/page-copy.js';
 import { PICK_IN_WORKER_ABOVE, transferables } from '../../src/workers/protocol.js';
 import { RenderLayout } from '../../src/workers/render.js';
 import { EditingSession } from '../../src/workers/session.js';
 import { meshContents } from '../core/contents.js';
-import { type PageSession, pageSession } from './page-session.js';
+import { type PageSession, pageSession, randomEdit } from './page-session.js';
 
 async function sessionWith(bytes: Uint8Array, name: string): Promise<PageSession & { adopt: EditingSession['adopt']; setProgressListener: EditingSession['setProgressListener']; exportMesh: EditingSession['exportMesh']; historyBytes: () => number }> {
   const session = new EditingSession();
@@ -193,6 +202,65 @@ describe('EditingSession', () => {
     const session = await sessionWith(cubeFile(), 'cube.off');
     const text = new TextDecoder().decode(await session.exportMesh('obj'));
     expect(text.match(/^f /gm)).toHaveLength(6);
+  });
+});
+
+describe('a patched snapshot', () => {
+  it.each([
+    ['a disk', () => disk(6)],
+    ['an annulus', () => annulus(24)],
+    ['a sphere', () => uvSphere(16, 24)],
+  ])('carries its change’s check and the exact boundary edges, the rest pending until details() (%s)', async (_, shape) => {
+    const session = new EditingSession();
+    session.adopt(await loadFile(writeSoup(shape(), 'off'), 'model.off'));
+    const page = new PageCopy();
+    page.take(session.snapshot());
+    const random = seededRandom(20261126);
+    let patched = 0;
+    let version = 0;
+    for (let i = 0; i < 60; i++) {
+      const request = randomEdit(page.mesh!, random);
+      const roll = random();
+      const snapshot = roll < 0.7 && request ? session.edit(request) : roll < 0.85 ? session.undo() : session.redo();
+      const shown = page.take(snapshot);
+      version = snapshot.version;
+      if (!snapshot.patch) continue;
+      patched++;
+      const whole = meshStats(shown.mesh);
+      const step = `${i}: ${roll < 0.7 && request ? JSON.stringify(request) : 'undo or redo'}`;
+      expect(shown.pending, step).toBe(true);
+      expect(shown.problems, step).toEqual([]);
+      const exact = ({ vertices, edges, faces, eulerCharacteristic, boundaryEdges }: typeof whole) => ({ vertices, edges, faces, eulerCharacteristic, boundaryEdges });
+      expect(exact(shown.stats), step).toEqual(exact(whole));
+    }
+    expect(patched).toBeGreaterThan(40);
+    // the full pass agrees, and is of this snapshot
+    const details = session.details();
+    expect(details.version).toBe(version);
+    expect(details.problems).toEqual([]);
+    expect(details.stats).toEqual(meshStats(page.mesh!));
+  });
+
+  it('keeps the problems a broken mesh had before the change, for the full pass to sort out', async () => {
+    const session = new EditingSession();
+    session.adopt(await loadFile(writeSoup(disk(6), 'off'), 'disk.off'));
+    const { mesh } = buildMesh(disk(6));
+    const v = [...mesh.vertices()].find((u) => !mesh.isBoundaryVertex(u))!;
+    // an edge whose flip stays two rings away from v
+    const nearV = new Set([v]);
+    for (let ring = 0; ring < 2; ring++) for (const u of [...nearV]) for (const w of vertexAdjacentVertices(mesh, u)) nearV.add(w);
+    const cornersNear = (h: number) => [...faceVertices(mesh, mesh.heFace[h])].some((u) => nearV.has(u));
+    const far = [...mesh.edges()].find((e) => canFlipEdge(mesh, e) === null && !cornersNear(2 * e) && !cornersNear(2 * e + 1))!;
+    mesh.vHalfedge[v] = mesh.vHalfedge[v] ^ 1; // a halfedge that ends at v
+    const practiced = session.practice(serializeMesh(mesh), 'a broken disk', null);
+    expect(practiced.details.problems.length).toBeGreaterThan(0);
+    // the check of what the flip touches alone would find nothing
+    expect(validateChange(mesh, flipEdge(mesh, far).record!)).toEqual([]);
+    const edited = session.edit({ kind: 'flip-edge', edge: far });
+    expect(edited.patch).not.toBeNull();
+    expect(edited.details.pending).toBe(true);
+    expect(edited.details.problems).toEqual(practiced.details.problems);
+    expect(session.details().problems).toEqual(practiced.details.problems);
   });
 });
 
