@@ -205,6 +205,17 @@ export function noChange(mesh: HalfedgeMesh): ChangeRecord {
   };
 }
 
+/**
+ * Whether the change brings an element into use, deletes one or brings one back: whether the live
+ * ids differ before and after it. A flip keeps them; a split adds some.
+ */
+export function changesLiveIds(record: ChangeRecord): boolean {
+  const { before, after } = record;
+  if (before.vertexSlots !== after.vertexSlots || before.edgeSlots !== after.edgeSlots || before.faceSlots !== after.faceSlots) return true;
+  // the record lists a field only when its value changed: a flag listed is a flag that changed
+  return record.pointers.array.some((array) => meshArrays[array].refers === null);
+}
+
 /** Elements by kind, each list in increasing order (an edge is listed as its two halfedges). */
 export interface TouchedElements {
   vertices: Int32Array;

@@ -421,7 +421,7 @@ export class App {
     }
     // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
     void this.detail.refresh(snapshot.renderPatch !== null);
-    this.tables.setMesh(mesh, this.inspection.convention);
+    this.tables.setMesh(mesh, this.inspection.convention, snapshot.idsVersion);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
     this.frame.classList.toggle('stepping', snapshot.stepping !== null);
@@ -712,7 +712,7 @@ export class App {
     this.drawLegend();
     renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), convention);
     if (this.quiz.active) this.quiz.ask();
-    if (this.mesh) this.tables.setMesh(this.mesh, convention);
+    if (this.snapshot) this.tables.setMesh(this.snapshot.mesh, convention, this.snapshot.idsVersion);
     this.drawSelection();
     this.drawPanels();
   }

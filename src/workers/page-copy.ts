@@ -3,7 +3,7 @@
  * carries them, or changed in place by a snapshot's patch (the change record applied forwards, the
  * render writes copied in), so after an edit the page touches only what the edit changed.
  */
-import { applyChange, deserializeMesh, type HalfedgeMesh } from '../core/index.js';
+import { applyChange, changesLiveIds, deserializeMesh, type HalfedgeMesh } from '../core/index.js';
 import type { RenderBuffers, RenderPatch, Snapshot, SnapshotDetails } from './protocol.js';
 
 /**
@@ -17,10 +17,17 @@ export interface PageSnapshot extends Omit<Snapshot, 'mesh' | 'render' | 'patch'
   render: RenderBuffers;
   renderPatch: RenderPatch | null;
   pending: boolean;
+  /**
+   * Changes whenever `mesh` may hold other live ids than at the snapshot before: a whole mesh
+   * taken, or a patch that created or deleted elements. The same number on the same mesh object
+   * means the same live ids (a view may keep what it listed of them).
+   */
+  idsVersion: number;
 }
 
 export class PageCopy {
   private held: { version: number; mesh: HalfedgeMesh; render: RenderBuffers } | null = null;
+  private idsVersion = 0;
 
   /** The mesh held (null before the first snapshot). */
   get mesh(): HalfedgeMesh | null {
@@ -41,13 +48,15 @@ export class PageCopy {
     if (patch) {
       if (!this.held || this.held.version !== patch.from) throw new Error(`a patch of snapshot ${patch.from}, but the page holds ${this.held?.version}`);
       applyChange(this.held.mesh, patch.change, 'forward');
+      if (changesLiveIds(patch.change)) this.idsVersion++;
       for (const { buffer, offset, data } of patch.render.writes) (this.held.render[buffer] as Float32Array).set(data as Float32Array, offset);
       this.held.render.counts = patch.render.counts;
       this.held.version = snapshot.version;
     } else {
       this.held = { version: snapshot.version, mesh: deserializeMesh(mesh!), render: render! };
+      this.idsVersion++;
     }
     const { version: _, ...full } = details;
-    return { ...rest, ...full, mesh: this.held.mesh, render: this.held.render, renderPatch: patch?.render ?? null };
+    return { ...rest, ...full, mesh: this.held.mesh, render: this.held.render, renderPatch: patch?.render ?? null, idsVersion: this.idsVersion };
   }
 }

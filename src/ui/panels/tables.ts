@@ -99,8 +99,12 @@ export class RecordTables {
   private mesh: HalfedgeMesh | null = null;
   private convention: Convention = 'origin';
   private selected: Selection | null = null;
+  /** The mesh's `idsVersion` (see `PageSnapshot`): the same number on the same mesh, the same live ids. */
+  private idsVersion = -1;
   /** The current table's rows as element ids (null: row i is element i). */
   private ids: Int32Array | null = null;
+  /** What `ids` lists: the live ids of this kind, in this mesh, at this `idsVersion`. */
+  private listed: { mesh: HalfedgeMesh; idsVersion: number; kind: ElementKind } | null = null;
   private readonly tabs: HTMLButtonElement[];
   private readonly header = el('div', { class: 'table-row table-head', role: 'row' });
   private readonly table = el('div', { class: 'table', role: 'table' });
@@ -126,10 +130,12 @@ export class RecordTables {
     replace(container, el('div', { class: 'table-tabs', role: 'tablist' }, ...this.tabs, csv), this.table);
   }
 
-  setMesh(mesh: HalfedgeMesh, convention: Convention): void {
+  /** Shows `mesh` (of a snapshot whose `idsVersion` is given) in the naming `convention`. */
+  setMesh(mesh: HalfedgeMesh, convention: Convention, idsVersion: number): void {
     this.mesh = mesh;
     this.convention = convention;
-    this.ids = liveIds(mesh, this.spec);
+    this.idsVersion = idsVersion;
+    this.listIds();
     this.render();
   }
 
@@ -155,8 +161,21 @@ export class RecordTables {
    */
   private switchTo(kind: ElementKind): void {
     this.spec = tableSpecs.find((s) => s.kind === kind) ?? this.spec;
-    this.ids = this.mesh ? liveIds(this.mesh, this.spec) : null;
+    this.listIds();
     this.render();
+  }
+
+  /**
+   * Lists the current table's live ids, unless the list already holds them: listing them takes a
+   * pass over the slots (tens of milliseconds on a large mesh with deleted ones), and after a flip,
+   * say, they are as they were.
+   */
+  private listIds(): void {
+    const { mesh, idsVersion, listed } = this;
+    const kind = this.spec.kind;
+    if (!mesh || (listed?.mesh === mesh && listed.idsVersion === idsVersion && listed.kind === kind)) return;
+    this.ids = liveIds(mesh, this.spec);
+    this.listed = { mesh, idsVersion, kind };
   }
 
   /** Scrolls row `row` to the top, or into view (to the middle, only when it is out of sight). */
