@@ -136,7 +136,9 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const { operation, phases } = startOperation(working, request);
     const startPositions = inPlace ? positionsOf(current) : null;
     this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null };
-    // nothing has changed yet (the copy equals the mesh the page holds): an empty patch, not the whole mesh
+    // a subdivision compacts its copy first: the page then needs the renumbered mesh whole
+    if (working.vertexSlots !== current.vertexSlots || working.edgeSlots !== current.edgeSlots || working.faceSlots !== current.faceSlots) return this.send(null, -1);
+    // else nothing has changed yet (the copy equals the mesh the page holds): an empty patch, not the whole mesh
     return this.send(undone ?? noChange(current), from);
   }
 

@@ -4,7 +4,7 @@
  * whole mesh before and after finds.
  */
 import { describe, expect, it } from 'vitest';
-import { buildMesh, cannotDecimate, diffPointers, disk, type HalfedgeMesh, phaseDiff, pointerCopy, torus, uvSphere } from '../../src/index.js';
+import { buildMesh, cannotDecimate, collapseEdge, diffPointers, triangulateMesh, disk, type HalfedgeMesh, phaseDiff, pointerCopy, torus, uvSphere } from '../../src/index.js';
 import { cannotSubdivide, subdivisionSchemes } from '../../src/core/subdivision/index.js';
 import { type OperationRequest, startOperation } from '../../src/workers/operations.js';
 
@@ -12,6 +12,16 @@ const meshes: Array<[string, () => HalfedgeMesh]> = [
   ['a sphere of triangles and quads', () => buildMesh(uvSphere(6, 8)).mesh],
   ['a torus of quads', () => buildMesh(torus(6, 5)).mesh],
   ['a disk (open)', () => buildMesh(disk(3)).mesh],
+  // deleted slots among the live ones, as after an edit: a phase's lists must not trip over them
+  [
+    'a sphere after two collapses',
+    () => {
+      const { mesh } = buildMesh(uvSphere(6, 8));
+      triangulateMesh(mesh);
+      for (const e of [7, 30]) collapseEdge(mesh, e);
+      return mesh;
+    },
+  ],
 ];
 
 const requests: OperationRequest[] = [

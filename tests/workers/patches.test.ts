@@ -75,8 +75,11 @@ describe('the page copy, patched', () => {
         // nothing has changed at the start: an empty patch, not the whole mesh again
         startsPatched.push(page.patched.at(-3)!);
       } else {
+        // a subdivision compacts its copy first: the page gets the renumbered mesh whole when there was something to compact
+        const compact = mesh.isCompact;
         check(page.start({ kind: 'subdivide', scheme: 'catmull-clark' }), `${i}: subdivide`);
-        startsPatched.push(page.patched.at(-1)!);
+        if (compact) startsPatched.push(page.patched.at(-1)!);
+        else expect(page.patched.at(-1), `${i}: a renumbered start`).toBe(false);
         check(page.step(), `${i}: first phase`);
         check(page.cancel(), `${i}: cancelled`);
       }
