@@ -109,7 +109,12 @@ export const MAX_PHASE_MARKS = 5000;
 /** What a phase created, moved and rewired, in the stepper's colours (ids no longer there are skipped). */
 export function phaseHighlight(mesh: HalfedgeMesh, phase: Phase): HighlightSpec {
   const spec = emptyHighlight();
-  const take = (ids: Int32Array | undefined, alive: (id: number) => boolean) => Array.from(ids ?? []).filter(alive).slice(0, MAX_PHASE_MARKS);
+  // the first live ones, without a pass over all of them (a smoothing step moves every vertex)
+  const take = (ids: Int32Array | undefined, alive: (id: number) => boolean) => {
+    const taken: number[] = [];
+    for (let i = 0; ids && i < ids.length && taken.length < MAX_PHASE_MARKS; i++) if (alive(ids[i])) taken.push(ids[i]);
+    return taken;
+  };
   const vertexAlive = (v: number) => v < mesh.vertexSlots && !mesh.vDeleted[v];
   const halfedgeAlive = (h: number) => h < mesh.halfedgeSlots && !mesh.eDeleted[h >> 1];
   const faceAlive = (f: number) => f < mesh.faceSlots && !mesh.fDeleted[f];

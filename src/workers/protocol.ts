@@ -12,6 +12,7 @@
 import { transferHandlers } from 'comlink';
 import {
   type BuildReport,
+  changeBuffers,
   type ChangeRecord,
   errorFromJSON,
   type ErrorRecord,
@@ -103,6 +104,11 @@ export interface RenderWrite {
 export interface RenderPatch {
   writes: RenderWrite[];
   counts: RenderBuffers['counts'];
+  /**
+   * Copies of the writes to `positions` and `triangles` for the picking worker, made here so that
+   * the page only passes them on (as `RenderBuffers.picking`); null where the page picks by itself.
+   */
+  picking: RenderWrite[] | null;
 }
 
 /**
@@ -262,7 +268,8 @@ export interface LoaderApi {
 
 /**
  * The buffers of a snapshot or loaded file to transfer rather than copy: the whole mesh and render
- * buffers, made for the page alone. A patch's record is copied (the history keeps its own).
+ * buffers and a patch's record (the session sends a copy of a record its history keeps), made for
+ * the page alone.
  */
 export function transferables(value: Snapshot | LoadedFile): ArrayBuffer[] {
   const buffers = value.mesh ? meshBuffers(value.mesh) : [];
@@ -272,9 +279,13 @@ export function transferables(value: Snapshot | LoadedFile): ArrayBuffer[] {
     const arrays = [positions, triangles, triangleFace, edges, vertices, ...(picking ? [picking.positions, picking.triangles] : [])];
     buffers.push(...arrays.map((a) => a.buffer as ArrayBuffer));
   }
-  if ('patch' in value && value.patch) buffers.push(...value.patch.render.writes.map((w) => w.data.buffer as ArrayBuffer));
+  if ('patch' in value && value.patch) {
+    const { writes, picking } = value.patch.render;
+    buffers.push(...[...writes, ...(picking ?? [])].map((w) => w.data.buffer as ArrayBuffer), ...changeBuffers(value.patch.change));
+  }
   if ('colours' in value && value.colours) buffers.push(value.colours.colours.buffer as ArrayBuffer);
-  return buffers;
+  // a buffer may hold several of the arrays: each goes once
+  return [...new Set(buffers)];
 }
 
 /**

@@ -34,6 +34,8 @@ export class RenderLayout {
   private capacity = { vertices: 0, edges: 0, triangles: 0 };
   /** Faces with more than three sides: a vertex that moves may change their triangles. */
   private polygons = 0;
+  /** Whether the page picks in its worker (decided at the last full layout): patches then carry its copies. */
+  private pickingInWorker = false;
 
   /** Every buffer laid out afresh, with room to grow. */
   full(mesh: HalfedgeMesh): RenderBuffers {
@@ -70,6 +72,7 @@ export class RenderLayout {
     }
     this.capacity = { vertices: vertexRoom, edges: edgeRoom, triangles: triangleRoom };
     const used = this.counts(mesh);
+    this.pickingInWorker = used.triangles > PICK_IN_WORKER_ABOVE;
     return {
       positions,
       vertices,
@@ -78,7 +81,7 @@ export class RenderLayout {
       triangleFace,
       counts: used,
       planeNormal: planeNormal(mesh),
-      picking: used.triangles > PICK_IN_WORKER_ABOVE ? { positions: positions.slice(), triangles: triangles.slice(0, 3 * used.triangles) } : null,
+      picking: this.pickingInWorker ? { positions: positions.slice(), triangles: triangles.slice(0, 3 * used.triangles) } : null,
     };
   }
 
@@ -126,7 +129,8 @@ export class RenderLayout {
       writeTriangles(corners, f, 0, data, faces);
       if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
     }
-    return { writes, counts: this.counts(mesh) };
+    const picking = this.pickingInWorker ? writes.filter((w) => w.buffer === 'positions' || w.buffer === 'triangles').map((w) => ({ ...w, data: w.data.slice() })) : null;
+    return { writes, counts: this.counts(mesh), picking };
   }
 
   /**

@@ -191,7 +191,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     });
     this.state++;
     // the page may hold the operation that was just dropped: then it needs the whole mesh
-    return this.send(undone ? null : record, undone ? -1 : from);
+    return this.send(undone ? null : record, undone ? -1 : from, true);
   }
 
   undo(): Snapshot {
@@ -217,7 +217,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
         : index === position - 1 && this.history.changeAt(position)
           ? invertChange(this.history.changeAt(position)!)
           : null;
-    return this.send(change, from);
+    return this.send(change, from, true);
   }
 
   /** The mesh as a file: `ply`, `ply-binary`, `off`, `obj` or `glb`. */
@@ -255,9 +255,10 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
 
   /**
    * The next snapshot: a patch when `change` leads from the state the page holds (`from`) to the
-   * current one and the render buffers have room for it, else the whole mesh.
+   * current one and the render buffers have room for it, else the whole mesh. `kept`: the history
+   * holds `change` (an edit, an undo), so the page gets a copy to own.
    */
-  private send(change: ChangeRecord | null, from: number): Snapshot {
+  private send(change: ChangeRecord | null, from: number, kept = false): Snapshot {
     const entry = this.history.entry();
     const stepping = this.stepping;
     const mesh = this.shownMesh();
@@ -265,7 +266,8 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const version = ++this.version;
     const canPatch = change !== null && this.sent?.state === from && this.lastDetails !== null;
     const render = canPatch ? this.layout.patch(mesh, change) : null;
-    const patch = render && this.sent ? { from: this.sent.version, change: change!, render } : null;
+    // the patch's record is transferred to the page: one the history keeps goes as a copy
+    const patch = render && this.sent ? { from: this.sent.version, change: kept ? structuredClone(change!) : change!, render } : null;
     this.sent = { version, state: this.state };
     const report = stepping ? null : info.report;
     this.lastDetails = patch ? patchedDetails(mesh, patch.change, this.lastDetails!, version) : fullDetails(mesh, report, version);

@@ -189,10 +189,10 @@ export class SurfaceLayer {
     (this.dots.material as PointsMaterial).size = 4 * scale;
   }
 
-  /** Passes a patch's positions and triangles on to the picking worker, which rebuilds its hierarchy. */
+  /** Passes a patch's positions and triangles on to the picking worker (the session's copies, transferred), which refits or rebuilds its hierarchy. */
   private patchPickingWorker(patch: RenderPatch): Promise<void> {
-    const writes = patch.writes.filter((write): write is PickingWrite => write.buffer === 'positions' || write.buffer === 'triangles');
-    return this.pickingWorker!.patch(writes.map(({ buffer, offset, data }) => ({ buffer, offset, data: data.slice() })), patch.counts.triangles);
+    const writes = (patch.picking ?? []) as PickingWrite[];
+    return this.pickingWorker!.patch(transfer(writes, writes.map((w) => w.data.buffer as ArrayBuffer)), patch.counts.triangles);
   }
 
   /** Hands the session's copies to the picking worker (transferred: the page copies nothing). */
