@@ -50,6 +50,8 @@ try {
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   const fetched = new Set<string>();
   page.context().on('response', (response) => {
+    // the offline service worker fetches every script to keep: those are not the first load's
+    if (response.request().serviceWorker()) return;
     const name = new URL(response.url()).pathname.split('/').pop()!;
     if (name.endsWith('.js')) fetched.add(name);
   });
@@ -117,12 +119,17 @@ try {
     ['undo', () => page.evaluate(() => window.halfedgeLab.undo()), 0.05],
     ['redo', () => page.evaluate(() => window.halfedgeLab.redo()), 0.05],
   ];
+  // an edit the session refuses never draws: say so rather than wait
+  const refusedIsAnError = (name: string, act: () => Promise<unknown>) => async () => {
+    if ((await act()) === null) throw new Error(`${name} was refused on the icosphere: ${await page.evaluate(() => window.halfedgeLab.state().message)}`);
+  };
   for (const [name, act, share] of edits(0)) {
     await settle(page);
-    const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, async () => void act(), 50);
+    const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, refusedIsAnError(name, act), 50);
     versus(name, timed.ms, share);
   }
-  for (const [name, act] of edits(1)) await measure(page, `${name}-icosphere-1310k-back-to-back`, 1_310_720, async () => void act(), 50);
+  // far from the first series' edges, which its collapse may have taken
+  for (const [name, act] of edits(10_000)) await measure(page, `${name}-icosphere-1310k-back-to-back`, 1_310_720, refusedIsAnError(name, act), 50);
   await settle(page);
   await page.evaluate(() => window.halfedgeLab.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 3 } }));
   const smoothStep = await measure(page, 'smoothing-step-icosphere-1310k', 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()), 50);
@@ -147,12 +154,12 @@ try {
 }
 
 /**
- * Waits until the view has run two more animation frames: the browser holds them back until the
- * frame being drawn is done, so the view is then at rest.
+ * Waits until the view is at rest: three seconds, several times what the software renderer takes
+ * over a frame of 2.6M triangles. (Neither animation frames nor reading a pixel back proved a
+ * reliable sign that the last frame was done: the changes measured after them still waited.)
  */
 async function settle(page: import('@playwright/test').Page): Promise<void> {
-  const frames = await page.evaluate(() => window.halfedgeLab.state().frames);
-  await page.waitForFunction((at) => window.halfedgeLab.state().frames >= at + 2, frames, { timeout: 60_000 });
+  await page.waitForTimeout(3000);
 }
 
 /**
