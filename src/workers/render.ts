@@ -97,12 +97,12 @@ export class RenderLayout {
       // a moved corner can change how a polygon splits into triangles: those polygons are drawn
       // again; when many corners moved (a smoothing step), every face, in one range
       const onlyMoved = change.pointers.array.length === 0 && touched.vertices.size + touched.edges.size + touched.faces.size === 0;
-      if (onlyMoved && touched.moved.size > mesh.vertexSlots / 4) writes.push(...this.everyFace(mesh));
+      if (onlyMoved && touched.moved.length > mesh.vertexSlots / 4) writes.push(...this.everyFace(mesh));
       else for (const v of touched.moved) this.polygonsAround(mesh, v, touched.faces);
     }
     const fallback = liveVertex(mesh);
 
-    writes.push(...positionWrites(mesh, [...touched.moved, ...touched.vertices]));
+    writes.push(...positionWrites(mesh, touched.moved.concat([...touched.vertices])));
     for (const v of touched.vertices) writes.push({ buffer: 'vertices', offset: v, data: Uint32Array.of(mesh.vDeleted[v] ? fallback : v) });
     for (const e of touched.edges) {
       const data = new Uint32Array(2);
@@ -166,11 +166,12 @@ export class RenderLayout {
 }
 
 /** The vertices, edges and faces whose drawing a change alters, and the vertices it only moved. */
-function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<number>; edges: Set<number>; faces: Set<number>; moved: Set<number> } {
+function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<number>; edges: Set<number>; faces: Set<number>; moved: number[] } {
   const vertices = new Set<number>();
   const edges = new Set<number>();
   const faces = new Set<number>();
-  const moved = new Set<number>();
+  // a list, not a set: a smoothing step moves every vertex, once
+  const moved: number[] = [];
   const { before, after } = change;
   for (let v = before.vertexSlots; v < after.vertexSlots; v++) vertices.add(v);
   for (let e = before.edgeSlots; e < after.edgeSlots; e++) edges.add(e);
@@ -206,7 +207,7 @@ function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<nu
     const count = value.old.length / 3;
     for (let i = 0; i < count; i++) {
       const v = value.index ? value.index[i] : value.start + i;
-      if (!vertices.has(v)) moved.add(v);
+      if (!vertices.has(v)) moved.push(v);
     }
   }
   return { vertices, edges, faces, moved };
