@@ -26,7 +26,7 @@ export interface Phase {
   created?: ElementIds;
   /** Vertices whose position this phase changed. */
   moved?: ElementIds;
-  /** Existing elements whose pointers this phase changed. */
+  /** Existing elements whose pointers this phase wrote (every one it changed; `phaseDiff` compares only these, with the created and removed). */
   rewired?: ElementIds;
   /** Elements this phase deleted (ids before compaction; gone afterwards). */
   removed?: ElementIds;
