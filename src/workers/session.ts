@@ -12,7 +12,6 @@
  * of the whole mesh (`MeshPatch`), so an edit costs what it changes.
  */
 import {
-  applyChange,
   type BuildReport,
   type ChangeRecord,
   deserializeMesh,
