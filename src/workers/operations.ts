@@ -99,9 +99,6 @@ export function startOperation(mesh: HalfedgeMesh, request: OperationRequest): {
   if (reason) throw new TopologyError(reason);
   switch (request.kind) {
     case 'subdivide': {
-      // a level numbers what it creates after the old elements, so it compacts the mesh first: done
-      // here, before the first phase, so that phase's pointer diff is its own work, not a renumbering
-      if (!mesh.isCompact) mesh.compact();
       const level = request.level ?? 0;
       const splitsBoundary = request.scheme === 'sqrt3' && level % 2 === 1 && hasBoundary(mesh);
       const phases = schemePhases[request.scheme] + (splitsBoundary ? 2 : 0);

@@ -34,7 +34,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
-import { requireApplicable, startLevel } from './preconditions.js';
+import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { addScaled, blendedAttributes, storeValues } from './stencil.js';
 import { cutCorners, range, splitEdges } from './topology.js';
 
@@ -45,6 +45,7 @@ import { cutCorners, range, splitEdges } from './topology.js';
  */
 export function butterflySubdivision(mesh: HalfedgeMesh): Operation {
   requireApplicable(mesh, 'butterfly');
+  compactAtOnce(mesh);
   return butterflyLevel(mesh, true);
 }
 

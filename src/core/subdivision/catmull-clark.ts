@@ -24,7 +24,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
-import { startLevel } from './preconditions.js';
+import { compactAtOnce, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
 import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
 
@@ -33,6 +33,7 @@ import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
  * @example runOperation(catmullClark(mesh)); // every face a quad
  */
 export function catmullClark(mesh: HalfedgeMesh): Operation {
+  compactAtOnce(mesh);
   return catmullClarkLevel(mesh, true);
 }
 

@@ -22,7 +22,7 @@
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { cutCorners, range, splitEdges } from './topology.js';
-import { requireApplicable, startLevel } from './preconditions.js';
+import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
 
 /**
@@ -32,6 +32,7 @@ import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from '
  */
 export function loopSubdivision(mesh: HalfedgeMesh): Operation {
   requireApplicable(mesh, 'loop');
+  compactAtOnce(mesh);
   return loopLevel(mesh, true);
 }
 

@@ -68,12 +68,20 @@ export function requireApplicable(mesh: HalfedgeMesh, scheme: SubdivisionScheme)
 }
 
 /**
+ * Compacts the mesh when a stepped level is set up, before its first phase runs: that phase's
+ * pointer diff is then its own work, not the renumbering (`startLevel` finds the mesh compact).
+ */
+export function compactAtOnce(mesh: HalfedgeMesh): void {
+  if (!mesh.isCompact) mesh.compact();
+}
+
+/**
  * Readies the mesh for one level: compacts it (new elements are numbered after the old ones by
  * arithmetic, which needs ids without gaps) and removes its halfedge and edge attributes, which
  * the schemes do not define on the corners and edges they create.
  */
 export function startLevel(mesh: HalfedgeMesh): void {
-  if (!mesh.isCompact) mesh.compact();
+  compactAtOnce(mesh);
   for (const set of [mesh.halfedgeAttributes, mesh.edgeAttributes]) {
     for (const { name } of [...set]) set.remove(name);
   }

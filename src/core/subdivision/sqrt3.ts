@@ -37,7 +37,7 @@
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { idRange, type Operation } from '../operation.js';
-import { requireApplicable, startLevel } from './preconditions.js';
+import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { addScaled, blendedAttributes, neighbourSums, storeValues } from './stencil.js';
 import { addFacePoints, appendSlots, fanFaces, marked, range, splitEdges, type TopologyChange } from './topology.js';
 
@@ -61,6 +61,7 @@ export function sqrt3Subdivision(mesh: HalfedgeMesh, options: SubdivisionOptions
     throw new InvalidInputError(`√3 subdivision: level must be a whole number ≥ 0, not ${level}`);
   }
   requireApplicable(mesh, 'sqrt3');
+  compactAtOnce(mesh);
   return sqrt3Level(mesh, true, level);
 }
 
