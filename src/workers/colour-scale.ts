@@ -55,7 +55,9 @@ export function colourScale(values: ArrayLike<number>): ColourScale {
   const low = diverging ? -top : Math.min(lowest, top);
   const colours = new Float32Array(3 * values.length);
   const put = (i: number, from: Rgb, to: Rgb, t: number) => {
-    for (let c = 0; c < 3; c++) colours[3 * i + c] = from[c] + (to[c] - from[c]) * t;
+    colours[3 * i] = from[0] + (to[0] - from[0]) * t;
+    colours[3 * i + 1] = from[1] + (to[1] - from[1]) * t;
+    colours[3 * i + 2] = from[2] + (to[2] - from[2]) * t;
   };
   for (let i = 0; i < values.length; i++) {
     const x = values[i]!;

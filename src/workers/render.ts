@@ -15,7 +15,7 @@
  * The session keeps one `RenderLayout` for what the page holds: `full()` lays the mesh out
  * afresh, `patch(change)` says what to rewrite, or null when a fresh layout is the better answer.
  */
-import type { ChangeRecord, HalfedgeMesh } from '../core/index.js';
+import type { ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
 import { faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
 import { PICK_IN_WORKER_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
@@ -97,12 +97,12 @@ export class RenderLayout {
       // a moved corner can change how a polygon splits into triangles: those polygons are drawn
       // again; when many corners moved (a smoothing step), every face, in one range
       const onlyMoved = change.pointers.array.length === 0 && touched.vertices.size + touched.edges.size + touched.faces.size === 0;
-      if (onlyMoved && touched.moved.length > mesh.vertexSlots / 4) writes.push(...this.everyFace(mesh));
-      else for (const v of touched.moved) this.polygonsAround(mesh, v, touched.faces);
+      if (onlyMoved && movedCount(touched.moved) > mesh.vertexSlots / 4) writes.push(...this.everyFace(mesh));
+      else forEachMoved(touched.moved, (v) => this.polygonsAround(mesh, v, touched.faces));
     }
     const fallback = liveVertex(mesh);
 
-    writes.push(...positionWrites(mesh, touched.moved.concat([...touched.vertices])));
+    writes.push(...positionWrites(mesh, touched.moved, touched.vertices));
     for (const v of touched.vertices) writes.push({ buffer: 'vertices', offset: v, data: Uint32Array.of(mesh.vDeleted[v] ? fallback : v) });
     for (const e of touched.edges) {
       const data = new Uint32Array(2);
@@ -165,13 +165,15 @@ export class RenderLayout {
   }
 }
 
-/** The vertices, edges and faces whose drawing a change alters, and the vertices it only moved. */
-function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<number>; edges: Set<number>; faces: Set<number>; moved: number[] } {
+/**
+ * The vertices, edges and faces whose drawing a change alters, and the position changes that
+ * moved vertices (kept as the record has them: a smoothing step's is one range of every vertex,
+ * which is never listed id by id).
+ */
+function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<number>; edges: Set<number>; faces: Set<number>; moved: ValueChange[] } {
   const vertices = new Set<number>();
   const edges = new Set<number>();
   const faces = new Set<number>();
-  // a list, not a set: a smoothing step moves every vertex, once
-  const moved: number[] = [];
   const { before, after } = change;
   for (let v = before.vertexSlots; v < after.vertexSlots; v++) vertices.add(v);
   for (let e = before.edgeSlots; e < after.edgeSlots; e++) edges.add(e);
@@ -202,27 +204,47 @@ function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<nu
         break;
     }
   }
-  for (const value of change.values) {
-    if (value.kind !== 'vertex' || value.name !== 'position') continue;
-    const count = value.old.length / 3;
-    for (let i = 0; i < count; i++) {
-      const v = value.index ? value.index[i] : value.start + i;
-      if (!vertices.has(v)) moved.push(v);
-    }
-  }
+  const moved = change.values.filter((value) => value.kind === 'vertex' && value.name === 'position');
   return { vertices, edges, faces, moved };
 }
 
-/** Positions of a few vertices one by one; of many (a smoothing step) as one range from the first to the last. */
-function positionWrites(mesh: HalfedgeMesh, vertices: number[]): RenderWrite[] {
+function movedCount(moved: ValueChange[]): number {
+  return moved.reduce((sum, value) => sum + value.old.length / value.itemSize, 0);
+}
+
+function forEachMoved(moved: ValueChange[], visit: (v: number) => void): void {
+  for (const value of moved) {
+    const count = value.old.length / value.itemSize;
+    for (let i = 0; i < count; i++) visit(value.index ? value.index[i] : value.start + i);
+  }
+}
+
+/**
+ * The positions of the moved and the touched vertices: a few one by one; many (a smoothing step)
+ * as one range from the first to the last.
+ */
+function positionWrites(mesh: HalfedgeMesh, moved: ValueChange[], touched: Set<number>): RenderWrite[] {
   const at = (v: number) => ({ buffer: 'positions' as const, offset: 3 * v, data: Float32Array.from(mesh.positions.subarray(3 * v, 3 * v + 3)) });
-  if (vertices.length <= 64) return vertices.map(at);
+  if (movedCount(moved) + touched.size <= 64) {
+    const writes: RenderWrite[] = [...touched].map(at);
+    forEachMoved(moved, (v) => writes.push(at(v)));
+    return writes;
+  }
   let first = Infinity;
   let last = -1;
-  for (const v of vertices) {
+  const include = (v: number) => {
     first = Math.min(first, v);
     last = Math.max(last, v);
+  };
+  touched.forEach(include);
+  for (const value of moved) {
+    if (value.index) value.index.forEach(include);
+    else if (value.old.length > 0) {
+      include(value.start);
+      include(value.start + value.old.length / value.itemSize - 1);
+    }
   }
+  if (last < 0) return [];
   return [{ buffer: 'positions', offset: 3 * first, data: new Float32Array(mesh.positions.subarray(3 * first, 3 * last + 3)) }];
 }
 
