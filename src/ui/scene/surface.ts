@@ -29,6 +29,8 @@ import type { PickingApi, PickingWrite } from './picking.worker.js';
 
 /** Draw vertices as dots up to this many. */
 const MAX_DOTS = 1_000;
+/** A patch that moves more vertices than this measures the bounding sphere again. */
+const REBOUND_ABOVE = 4096;
 
 export interface SurfaceHit {
   face: number;
@@ -94,7 +96,7 @@ export class SurfaceLayer {
         attribute.addUpdateRange(offset, data.length);
         attribute.needsUpdate = true;
       }
-      if (patch.writes.some((write) => write.buffer === 'positions')) this.faces.computeBoundingSphere();
+      this.boundMoved(patch);
       if (this.workerReady) this.workerReady = this.patchPickingWorker(patch);
     } else {
       const position = new BufferAttribute(render.positions, 3);
@@ -118,6 +120,23 @@ export class SurfaceLayer {
     this.vertices.boundingSphere = this.faces.boundingSphere!.clone();
     // a point set (no faces) shows its vertices however many there are
     this.dots.visible = counts.vertices <= MAX_DOTS || triangles === 0;
+  }
+
+  /**
+   * Keeps the bounding sphere around the positions a patch wrote: grown to take in a few moved
+   * vertices (an edit; a pass over a million positions would cost more than the edit), measured
+   * again when many moved (a smoothing step). Grown only, it may be larger than it need be, which
+   * costs nothing but a little culling.
+   */
+  private boundMoved(patch: RenderPatch): void {
+    const moved = patch.writes.filter((write) => write.buffer === 'positions');
+    const sphere = this.faces.boundingSphere;
+    if (!sphere || moved.reduce((sum, write) => sum + write.data.length, 0) > 3 * REBOUND_ABOVE) {
+      if (moved.length > 0) this.faces.computeBoundingSphere();
+      return;
+    }
+    const point = new Vector3();
+    for (const { data } of moved) for (let i = 0; i + 2 < data.length; i += 3) sphere.expandByPoint(point.set(data[i], data[i + 1], data[i + 2]));
   }
 
   /**
