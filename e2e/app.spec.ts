@@ -148,6 +148,21 @@ test.describe('the teaching app', () => {
       .toBe(true);
   });
 
+  test('after an edit that comes as a patch, the halfedges it deleted are no rows', async ({ page }) => {
+    await openApp(page, 'torus.off');
+    await page.evaluate(() => window.halfedgeLab.edit({ kind: 'collapse-edge', edge: 100 }));
+    await page.evaluate(() => window.halfedgeLab.select('h196'));
+    await expect(page.locator('#tables [data-element="h196"]')).toBeInViewport();
+    const rows = () => page.locator('#tables .table-rows > [data-element]').evaluateAll((rows) => rows.map((row) => (row as HTMLElement).dataset.element));
+    expect(await rows()).toContain('h204');
+    expect(await rows()).not.toContain('h200');
+    expect(await rows()).not.toContain('h201');
+    // and after its undo they are rows again
+    await page.evaluate(() => window.halfedgeLab.undo());
+    await page.evaluate(() => window.halfedgeLab.select('h196'));
+    await expect.poll(rows).toContain('h200');
+  });
+
   test('the record tables follow the selection, and a row click selects', async ({ page }) => {
     await openApp(page, 'torus.off');
     await page.evaluate(() => window.halfedgeLab.select('h300'));
@@ -194,6 +209,9 @@ test.describe('the teaching app', () => {
     // zoomed out, every edge is a pixel or two: no lines or arrows, the shaded surface instead
     await expect(page.locator('#arrow-note')).toContainText('Zoom in to see the halfedge arrows');
     await page.screenshot({ path: testInfo.outputPath('fine-mesh-zoomed-out.png') });
+    // an edit while the arrows are too small to see places none; they are placed once they show
+    await page.evaluate(() => window.halfedgeLab.edit({ kind: 'flip-edge', edge: 5 }));
+    expect(await page.evaluate(() => window.halfedgeLab.state().patched)).toBe(true);
 
     await page.getByRole('button', { name: 'Frame the selection' }).click();
     await expect(page.locator('#arrow-note')).toContainText('around the selection');

@@ -27,6 +27,8 @@ export interface DetailContext {
 export class ViewDetail {
   /** True while the arrows are hidden for being too small at this zoom (see `fit`). */
   private arrowsHidden = false;
+  /** True when a change came while the arrows were hidden: they are placed again once they show. */
+  private stale = false;
   /** Calls of `refresh` so far: one that waited must not undo a later one. */
   private refreshes = 0;
   /** The face last found in the middle of the view (-1: none yet), which arrows grow from without a selection. */
@@ -48,6 +50,15 @@ export class ViewDetail {
     const { mesh, scale } = this.context();
     if (!mesh) return;
     const call = ++this.refreshes;
+    if (sameView && this.arrowsHidden) {
+      // too small to see at this zoom: placing up to MAX_ARROWS of them would be wasted on every
+      // edit; none are kept (picking must not find an arrow of the mesh before), and `fit` asks
+      // again once they show
+      this.arrows.update(mesh, new Int32Array(0), scale);
+      this.stale = true;
+      return;
+    }
+    this.stale = false;
     if (mesh.nHalfedges <= MAX_ARROWS) {
       this.arrows.update(mesh, null, scale);
     } else {
@@ -82,6 +93,7 @@ export class ViewDetail {
     if (arrowsHidden !== this.arrowsHidden) {
       this.arrowsHidden = arrowsHidden;
       this.showNote();
+      if (!arrowsHidden && this.stale) void this.refresh(true);
     }
   }
 
