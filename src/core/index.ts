@@ -6,6 +6,7 @@ export * from './attributes.js';
 export * from './build.js';
 export * from './circulators.js';
 export * from './change.js';
+export * from './live-ids.js';
 export * from './diff.js';
 export * from './errors.js';
 export * from './fingerprint.js';

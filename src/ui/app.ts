@@ -421,7 +421,7 @@ export class App {
     }
     // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
     void this.detail.refresh(snapshot.renderPatch !== null);
-    this.tables.setMesh(mesh, this.inspection.convention, snapshot.idsVersion);
+    this.tables.setMesh(mesh, this.inspection.convention, snapshot.idsVersion, snapshot.change);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
     this.frame.classList.toggle('stepping', snapshot.stepping !== null);

@@ -3,7 +3,7 @@
  * carries them, or changed in place by a snapshot's patch (the change record applied forwards, the
  * render writes copied in), so after an edit the page touches only what the edit changed.
  */
-import { applyChange, changesLiveIds, deserializeMesh, type HalfedgeMesh } from '../core/index.js';
+import { applyChange, type ChangeRecord, changesLiveIds, deserializeMesh, type HalfedgeMesh } from '../core/index.js';
 import type { RenderBuffers, RenderPatch, Snapshot, SnapshotDetails } from './protocol.js';
 
 /**
@@ -16,6 +16,8 @@ export interface PageSnapshot extends Omit<Snapshot, 'mesh' | 'render' | 'patch'
   mesh: HalfedgeMesh;
   render: RenderBuffers;
   renderPatch: RenderPatch | null;
+  /** The change record that led to `mesh` from the snapshot before, when this one came as a patch. */
+  change: ChangeRecord | null;
   pending: boolean;
   /**
    * Changes whenever `mesh` may hold other live ids than at the snapshot before: a whole mesh
@@ -57,6 +59,6 @@ export class PageCopy {
       this.idsVersion++;
     }
     const { version: _, ...full } = details;
-    return { ...rest, ...full, mesh: this.held.mesh, render: this.held.render, renderPatch: patch?.render ?? null, idsVersion: this.idsVersion };
+    return { ...rest, ...full, mesh: this.held.mesh, render: this.held.render, renderPatch: patch?.render ?? null, change: patch?.change ?? null, idsVersion: this.idsVersion };
   }
 }

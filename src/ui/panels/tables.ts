@@ -5,7 +5,7 @@
  * 100k-face mesh scrolls as smoothly as a cube. Deleted slots (an operation leaves them until the
  * mesh is compacted) are not rows: the tables list the mesh as it is. Each table exports as CSV.
  */
-import type { HalfedgeMesh } from '../../core/index.js';
+import { type ChangeRecord, type HalfedgeMesh, isLive, type ListedKind, LiveIds, slotsOf } from '../../core/index.js';
 import { el, replace } from '../dom.js';
 import { download } from './export.js';
 import { type Convention, round } from '../records.js';
@@ -15,12 +15,11 @@ const ROW_HEIGHT = 28;
 const OVERSCAN = 8;
 
 interface TableSpec {
-  kind: ElementKind;
+  kind: ListedKind;
   title: string;
   /** CSS grid columns. */
   widths: string;
   columns: (convention: Convention) => string[];
-  count: (mesh: HalfedgeMesh) => number;
   /** Cells of row `id`: strings, or element names that become links. */
   row: (mesh: HalfedgeMesh, id: number, convention: Convention) => Array<string | Selection>;
 }
@@ -35,7 +34,6 @@ export const tableSpecs: TableSpec[] = [
     title: 'Vertices',
     widths: 'minmax(0, 1fr) minmax(0, 3fr) minmax(0, 1.2fr)',
     columns: () => ['vertex', 'coordinates', 'incident halfedge'],
-    count: (mesh) => mesh.vertexSlots,
     row: (mesh, id) => [elementName({ kind: 'vertex', id }), `(${mesh.position(id).map(round).join(', ')})`, h(mesh.vertexHalfedge(id))] as Array<string | Selection>,
   },
   {
@@ -43,7 +41,6 @@ export const tableSpecs: TableSpec[] = [
     title: 'Faces',
     widths: 'repeat(3, minmax(0, 1fr))',
     columns: () => ['face', 'halfedge', 'sides'],
-    count: (mesh) => mesh.faceSlots,
     row: (mesh, id) => [elementName({ kind: 'face', id }), h(mesh.faceHalfedge(id)), String(mesh.faceDegree(id))] as Array<string | Selection>,
   },
   {
@@ -51,7 +48,6 @@ export const tableSpecs: TableSpec[] = [
     title: 'Halfedges',
     widths: 'repeat(7, minmax(0, 1fr))',
     columns: (convention) => ['halfedge', convention, 'twin', 'face', 'next', 'prev', 'edge'],
-    count: (mesh) => mesh.halfedgeSlots,
     row: (mesh, id, convention) =>
       [
         elementName({ kind: 'halfedge', id }),
@@ -65,44 +61,6 @@ export const tableSpecs: TableSpec[] = [
   },
 ];
 
-function isDeleted(mesh: HalfedgeMesh, kind: ElementKind, id: number): boolean {
-  if (kind === 'vertex') return mesh.vDeleted[id] === 1;
-  if (kind === 'face') return mesh.fDeleted[id] === 1;
-  return mesh.eDeleted[id >> 1] === 1;
-}
-
-/**
- * The live ids of a table, in order (row i shows element `ids[i]`), or null when none is deleted:
- * counted, then written, straight from the deleted flags (millions of halfedges on a large mesh).
- */
-function liveIds(mesh: HalfedgeMesh, spec: TableSpec): Int32Array | null {
-  if (mesh.isCompact) return null;
-  const count = spec.count(mesh);
-  const deleted = spec.kind === 'vertex' ? mesh.vDeleted : spec.kind === 'face' ? mesh.fDeleted : mesh.eDeleted;
-  // a halfedge is deleted with its edge
-  const shift = spec.kind === 'vertex' || spec.kind === 'face' ? 0 : 1;
-  let live = 0;
-  for (let id = 0; id < count; id++) if (deleted[id >> shift] === 0) live++;
-  if (live === count) return null;
-  const ids = new Int32Array(live);
-  for (let id = 0, row = 0; id < count; id++) if (deleted[id >> shift] === 0) ids[row++] = id;
-  return ids;
-}
-
-/** The row of element `id` in a table whose rows are `ids` (null: every id), or -1 when it has none. */
-function rowOf(ids: Int32Array | null, id: number): number {
-  if (!ids) return id;
-  let lo = 0;
-  let hi = ids.length - 1;
-  while (lo <= hi) {
-    const mid = (lo + hi) >> 1;
-    if (ids[mid] === id) return mid;
-    if (ids[mid] < id) lo = mid + 1;
-    else hi = mid - 1;
-  }
-  return -1;
-}
-
 export class RecordTables {
   private spec = tableSpecs[2];
   private mesh: HalfedgeMesh | null = null;
@@ -110,8 +68,8 @@ export class RecordTables {
   private selected: Selection | null = null;
   /** The mesh's `idsVersion` (see `PageSnapshot`): the same number on the same mesh, the same live ids. */
   private idsVersion = -1;
-  /** The current table's rows as element ids (null: row i is element i). */
-  private ids: Int32Array | null = null;
+  /** The current table's rows: its kind's live ids (null before a mesh). */
+  private ids: LiveIds | null = null;
   /** What `ids` lists: the live ids of this kind, in this mesh, at this `idsVersion`. */
   private listed: { mesh: HalfedgeMesh; idsVersion: number; kind: ElementKind } | null = null;
   private readonly tabs: HTMLButtonElement[];
@@ -139,19 +97,22 @@ export class RecordTables {
     replace(container, el('div', { class: 'table-tabs', role: 'tablist' }, ...this.tabs, csv), this.table);
   }
 
-  /** Shows `mesh` (of a snapshot whose `idsVersion` is given) in the naming `convention`. */
-  setMesh(mesh: HalfedgeMesh, convention: Convention, idsVersion: number): void {
+  /**
+   * Shows `mesh` (of a snapshot whose `idsVersion` is given) in the naming `convention`;
+   * `change`: the record that led to it from the snapshot before, if it came as a patch.
+   */
+  setMesh(mesh: HalfedgeMesh, convention: Convention, idsVersion: number, change: ChangeRecord | null = null): void {
     this.mesh = mesh;
     this.convention = convention;
     this.idsVersion = idsVersion;
-    this.listIds();
+    this.listIds(change);
     this.render();
   }
 
   /** Shows another table, at the selected element's row when it is one of that table's, else at the top. */
   show(kind: ElementKind): void {
     this.switchTo(kind);
-    this.scrollToRow(this.selected?.kind === kind ? rowOf(this.ids, this.selected.id) : 0, 'top');
+    this.scrollToRow(this.selected?.kind === kind ? this.ids?.rowOf(this.selected.id) ?? -1 : 0, 'top');
   }
 
   /** Marks the selected element's row and scrolls it into view (switching tables if needed). */
@@ -159,7 +120,7 @@ export class RecordTables {
     this.selected = selection;
     if (selection && selection.kind !== 'edge') {
       if (selection.kind !== this.spec.kind) this.switchTo(selection.kind);
-      this.scrollToRow(rowOf(this.ids, selection.id), 'into view');
+      this.scrollToRow(this.ids?.rowOf(selection.id) ?? -1, 'into view');
     }
     this.render();
   }
@@ -177,13 +138,16 @@ export class RecordTables {
   /**
    * Lists the current table's live ids, unless the list already holds them: listing them takes a
    * pass over the slots (tens of milliseconds on a large mesh with deleted ones), and after a flip,
-   * say, they are as they were.
+   * say, they are as they were. After a change that created or deleted some (`change`, which
+   * led from the ids listed to these), only the ids it touched are looked at again.
    */
-  private listIds(): void {
+  private listIds(change: ChangeRecord | null = null): void {
     const { mesh, idsVersion, listed } = this;
     const kind = this.spec.kind;
-    if (!mesh || (listed?.mesh === mesh && listed.idsVersion === idsVersion && listed.kind === kind)) return;
-    this.ids = liveIds(mesh, this.spec);
+    if (!mesh) return;
+    const same = listed?.mesh === mesh && listed.kind === kind;
+    if (same && listed.idsVersion === idsVersion) return;
+    this.ids = same && change && this.ids && listed.idsVersion === idsVersion - 1 ? this.ids.after(mesh, kind, change) : LiveIds.of(mesh, kind);
     this.listed = { mesh, idsVersion, kind };
   }
 
@@ -203,8 +167,8 @@ export class RecordTables {
     const mesh = this.mesh;
     if (!mesh) return '';
     const lines = [this.spec.columns(this.convention).join(',')];
-    for (let id = 0; id < this.spec.count(mesh); id++) {
-      if (isDeleted(mesh, this.spec.kind, id)) continue;
+    for (let id = 0, slots = slotsOf(mesh, this.spec.kind); id < slots; id++) {
+      if (!isLive(mesh, this.spec.kind, id)) continue;
       lines.push(this.spec.row(mesh, id, this.convention).map((cell) => (typeof cell === 'string' ? `"${cell}"` : elementName(cell))).join(','));
     }
     return lines.join('\n') + '\n';
@@ -231,14 +195,14 @@ export class RecordTables {
     const mesh = this.mesh;
     if (!mesh) return;
     const ids = this.ids;
-    const count = ids ? ids.length : this.spec.count(mesh);
+    const count = ids?.count ?? 0;
     this.spacer.style.height = `${count * ROW_HEIGHT}px`;
     const first = Math.max(0, Math.floor(this.body.scrollTop / ROW_HEIGHT) - OVERSCAN);
     const last = Math.min(count, Math.ceil((this.body.scrollTop + (this.body.clientHeight || 400)) / ROW_HEIGHT) + OVERSCAN);
     this.rows.style.transform = `translateY(${first * ROW_HEIGHT}px)`;
     const rows: HTMLElement[] = [];
     for (let row = first; row < last; row++) {
-      const id = ids ? ids[row] : row;
+      const id = ids!.idAt(row);
       const self: Selection = { kind: this.spec.kind, id };
       const isSelected = this.selected?.kind === self.kind && this.selected.id === id;
       const cells = this.spec.row(mesh, id, this.convention).map((cell) =>
