@@ -133,6 +133,8 @@ export class App {
 
     this.viewer = new Viewer(this.byId('viewport'));
     this.viewer.add(this.surface.group, this.arrows.group, this.phaseLayer.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
+    // once the first mesh is drawn, in the time the student takes to look at it
+    void this.ready.then(() => this.surface.prepareColours(this.viewer));
     this.gizmo = new PlaneGizmo(this.viewer, (plane) => this.operations.setPlane(plane));
     this.viewer.add(this.gizmo.group);
     this.detail = new ViewDetail(this.viewer, this.surface, this.arrows, this.byId('arrow-note'), () => ({

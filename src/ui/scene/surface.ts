@@ -203,6 +203,29 @@ export class SurfaceLayer {
     return scale;
   }
 
+  /**
+   * Compiles the surface's shader for colours by value ahead of their first use, which would
+   * otherwise hold up the first phase that reports values (tens of milliseconds on a software
+   * renderer). Three.js keeps a material's programs, so switching to colours later finds it ready.
+   */
+  prepareColours(viewer: { precompile: (object: Mesh) => Promise<unknown> }): Promise<unknown> {
+    const material = this.surface.material;
+    if (material.vertexColors) return Promise.resolve();
+    const side = material.side;
+    material.vertexColors = true;
+    // both sides drawn, and the front only (see `cullBackFaces`): each its own variant. The
+    // variant is chosen as the call begins: the material can go back to what it was at once
+    const compiled = [DoubleSide, FrontSide].map((variant) => {
+      material.side = variant;
+      material.needsUpdate = true;
+      return viewer.precompile(this.surface);
+    });
+    material.vertexColors = false;
+    material.side = side;
+    material.needsUpdate = true;
+    return Promise.all(compiled);
+  }
+
   /** Line width and dot size, larger for a lecture hall. */
   setEmphasis(scale: number): void {
     (this.dots.material as PointsMaterial).size = 4 * scale;

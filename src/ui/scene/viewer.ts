@@ -96,6 +96,11 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** Compiles the shaders of `object` as the scene would draw it now, without drawing. */
+  precompile(object: Object3D): Promise<unknown> {
+    return this.renderer.compileAsync(object, this.camera, this.scene);
+  }
+
   /**
    * Points the camera at `box`. In the top view the orthographic camera looks down `normal`
    * (the plane of a planar mesh), like the figures in a textbook; the perspective camera keeps
