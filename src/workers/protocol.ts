@@ -84,6 +84,8 @@ export interface RenderBuffers {
   counts: { vertices: number; edges: number; triangles: number };
   /** The normal of the plane every face lies in, for a 2D mesh; null for a 3D one. */
   planeNormal: [number, number, number] | null;
+  /** A sphere around every live vertex, measured here rather than on the page's thread. */
+  bounds: Bounds;
   /**
    * Copies of `positions` and `triangles` for the picking worker (the page draws from the
    * originals), made here so that the page only passes them on; null up to PICK_IN_WORKER_ABOVE
@@ -91,6 +93,15 @@ export interface RenderBuffers {
    */
   picking: { positions: Float32Array; triangles: Uint32Array } | null;
 }
+
+/** A bounding sphere: the middle of the bounding box, and the distance to the vertex farthest from it. */
+export interface Bounds {
+  center: [number, number, number];
+  radius: number;
+}
+
+/** A patch that writes more positions than this carries the bounds measured again; one that writes fewer, the page grows its own to take them in. */
+export const REBOUND_ABOVE = 4096;
 
 /** New values for one range of one render buffer. */
 export interface RenderWrite {
@@ -109,6 +120,8 @@ export interface RenderPatch {
    * the page only passes them on (as `RenderBuffers.picking`); null where the page picks by itself.
    */
   picking: RenderWrite[] | null;
+  /** The bounds again, when the patch writes more than REBOUND_ABOVE positions; else null. */
+  bounds: Bounds | null;
 }
 
 /**

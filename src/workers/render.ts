@@ -18,7 +18,7 @@
 import type { ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
 import { faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
-import { PICK_IN_WORKER_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
+import { type Bounds, PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
 import { faceTriangles } from '../core/face-triangles.js';
 
 /** Spare room in every buffer, so that edits rarely need a fresh layout. */
@@ -81,6 +81,7 @@ export class RenderLayout {
       triangleFace,
       counts: used,
       planeNormal: planeNormal(mesh),
+      bounds: boundsOf(mesh),
       picking: this.pickingInWorker ? { positions: positions.slice(), triangles: triangles.slice(0, 3 * used.triangles) } : null,
     };
   }
@@ -102,7 +103,8 @@ export class RenderLayout {
     }
     const fallback = liveVertex(mesh);
 
-    writes.push(...positionWrites(mesh, touched.moved, touched.vertices));
+    const positions = positionWrites(mesh, touched.moved, touched.vertices);
+    writes.push(...positions);
     for (const v of touched.vertices) writes.push({ buffer: 'vertices', offset: v, data: Uint32Array.of(mesh.vDeleted[v] ? fallback : v) });
     for (const e of touched.edges) {
       const data = new Uint32Array(2);
@@ -130,7 +132,7 @@ export class RenderLayout {
       if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
     }
     const picking = this.pickingInWorker ? writes.filter((w) => w.buffer === 'positions' || w.buffer === 'triangles').map((w) => ({ ...w, data: w.data.slice() })) : null;
-    return { writes, counts: this.counts(mesh), picking };
+    return { writes, counts: this.counts(mesh), picking, bounds: positions.reduce((sum, w) => sum + w.data.length / 3, 0) > REBOUND_ABOVE ? boundsOf(mesh) : null };
   }
 
   /**
@@ -246,6 +248,31 @@ function positionWrites(mesh: HalfedgeMesh, moved: ValueChange[], touched: Set<n
   }
   if (last < 0) return [];
   return [{ buffer: 'positions', offset: 3 * first, data: new Float32Array(mesh.positions.subarray(3 * first, 3 * last + 3)) }];
+}
+
+/** The bounding sphere of the live vertices (three.js's way: the box's middle, then the farthest vertex). */
+function boundsOf(mesh: HalfedgeMesh): Bounds {
+  const p = mesh.positions;
+  const low = [Infinity, Infinity, Infinity];
+  const high = [-Infinity, -Infinity, -Infinity];
+  for (let v = 0; v < mesh.vertexSlots; v++) {
+    if (mesh.vDeleted[v]) continue;
+    for (let k = 0; k < 3; k++) {
+      low[k] = Math.min(low[k], p[3 * v + k]);
+      high[k] = Math.max(high[k], p[3 * v + k]);
+    }
+  }
+  if (low[0] > high[0]) return { center: [0, 0, 0], radius: 0 };
+  const center: [number, number, number] = [(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2];
+  let farthest = 0;
+  for (let v = 0; v < mesh.vertexSlots; v++) {
+    if (mesh.vDeleted[v]) continue;
+    const dx = p[3 * v] - center[0];
+    const dy = p[3 * v + 1] - center[1];
+    const dz = p[3 * v + 2] - center[2];
+    farthest = Math.max(farthest, dx * dx + dy * dy + dz * dz);
+  }
+  return { center, radius: Math.sqrt(farthest) };
 }
 
 function writeEdge(mesh: HalfedgeMesh, e: number, edges: Uint32Array, at: number): void {

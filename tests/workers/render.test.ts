@@ -3,8 +3,8 @@
  * after a face shrank and grew back many times (its range stays, its polygon count must not drift).
  */
 import { describe, expect, it } from 'vitest';
-import { applyChange, buildMesh, type ChangeRecord, grid, invertChange, noChange, triangulateFace } from '../../src/index.js';
-import type { RenderBuffers } from '../../src/workers/protocol.js';
+import { applyChange, buildMesh, type ChangeRecord, grid, invertChange, noChange, positionsChange, smooth, triangulateFace, uvSphere } from '../../src/index.js';
+import { type Bounds, REBOUND_ABOVE, type RenderBuffers } from '../../src/workers/protocol.js';
 import { RenderLayout } from '../../src/workers/render.js';
 
 /** The triangles the buffers draw, each as its sorted corners and its face. */
@@ -51,5 +51,33 @@ describe('the render layout, patched', () => {
     const position = { kind: 'vertex' as const, name: 'position', itemSize: 3, index: Int32Array.of(loop[1]), start: 0, old: Float64Array.from(p1), new: Float64Array.from(moved) };
     patch({ ...noChange(mesh), values: [position] });
     expect(drawnTriangles(render)).toEqual(drawnTriangles(new RenderLayout().full(mesh)));
+  });
+
+  it('carries the bounds measured again when it moves many vertices, none when it moves a few', () => {
+    const { mesh } = buildMesh(uvSphere(64, 96));
+    expect(mesh.vertexSlots).toBeGreaterThan(REBOUND_ABOVE);
+    const layout = new RenderLayout();
+    const holdsEveryVertex = (bounds: Bounds) => {
+      for (const v of mesh.vertices()) {
+        const p = mesh.position(v);
+        expect(Math.hypot(p[0] - bounds.center[0], p[1] - bounds.center[1], p[2] - bounds.center[2])).toBeLessThanOrEqual(bounds.radius * (1 + 1e-12));
+      }
+    };
+    holdsEveryVertex(layout.full(mesh).bounds);
+
+    // smoothing shrinks the sphere: the new bounds are smaller, and still hold every vertex
+    const before = mesh.positions.slice(0, 3 * mesh.vertexSlots);
+    smooth(mesh, { method: 'laplacian', iterations: 5 });
+    const patched = layout.patch(mesh, positionsChange(mesh, before))!;
+    expect(patched.bounds).not.toBeNull();
+    holdsEveryVertex(patched.bounds!);
+    expect(patched.bounds).toEqual(new RenderLayout().full(mesh).bounds);
+    expect(patched.bounds!.radius).toBeLessThan(0.999);
+
+    // one vertex moved: the page grows its own sphere
+    const old = mesh.positions.slice(0, 3);
+    mesh.positions[0] *= 2;
+    const position = { kind: 'vertex' as const, name: 'position', itemSize: 3, index: Int32Array.of(0), start: 0, old, new: mesh.positions.slice(0, 3) };
+    expect(layout.patch(mesh, { ...noChange(mesh), values: [position] })!.bounds).toBeNull();
   });
 });

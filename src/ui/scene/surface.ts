@@ -19,6 +19,7 @@ import {
   Points,
   PointsMaterial,
   type Raycaster,
+  Sphere,
   Vector3,
 } from 'three';
 import { type Remote, transfer, wrap } from 'comlink';
@@ -29,8 +30,6 @@ import type { PickingApi, PickingWrite } from './picking.worker.js';
 
 /** Draw vertices as dots up to this many. */
 const MAX_DOTS = 1_000;
-/** A patch that moves more vertices than this measures the bounding sphere again. */
-const REBOUND_ABOVE = 4096;
 
 export interface SurfaceHit {
   face: number;
@@ -109,7 +108,7 @@ export class SurfaceLayer {
       this.lines.setIndex(new BufferAttribute(render.edges, 1));
       this.vertices.setAttribute('position', position);
       this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
-      this.faces.computeBoundingSphere();
+      this.faces.boundingSphere = new Sphere(new Vector3(...render.bounds.center), render.bounds.radius);
       this.edgeLength = medianEdgeLength(render.positions, render.edges, counts.edges);
     }
     this.faces.setDrawRange(0, 3 * triangles);
@@ -123,20 +122,21 @@ export class SurfaceLayer {
   }
 
   /**
-   * Keeps the bounding sphere around the positions a patch wrote: grown to take in a few moved
-   * vertices (an edit; a pass over a million positions would cost more than the edit), measured
-   * again when many moved (a smoothing step). Grown only, it may be larger than it need be, which
-   * costs nothing but a little culling.
+   * Keeps the bounding sphere around the positions a patch wrote: measured again in the worker
+   * when many moved (a smoothing step), else grown here to take in the few that did (an edit).
+   * Grown only, it may be larger than it need be, which costs nothing but a little culling.
    */
   private boundMoved(patch: RenderPatch): void {
-    const moved = patch.writes.filter((write) => write.buffer === 'positions');
-    const sphere = this.faces.boundingSphere;
-    if (!sphere || moved.reduce((sum, write) => sum + write.data.length, 0) > 3 * REBOUND_ABOVE) {
-      if (moved.length > 0) this.faces.computeBoundingSphere();
+    const sphere = this.faces.boundingSphere!;
+    if (patch.bounds) {
+      sphere.set(new Vector3(...patch.bounds.center), patch.bounds.radius);
       return;
     }
     const point = new Vector3();
-    for (const { data } of moved) for (let i = 0; i + 2 < data.length; i += 3) sphere.expandByPoint(point.set(data[i], data[i + 1], data[i + 2]));
+    for (const { buffer, data } of patch.writes) {
+      if (buffer !== 'positions') continue;
+      for (let i = 0; i + 2 < data.length; i += 3) sphere.expandByPoint(point.set(data[i], data[i + 1], data[i + 2]));
+    }
   }
 
   /**
