@@ -142,7 +142,9 @@ export function boundingBox(mesh: HalfedgeMesh): BoundingBox | null {
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   let any = false;
-  for (const v of mesh.vertices()) {
+  // a loop over the slots, not the vertices() generator: the app runs this on every smoothing step
+  for (let v = 0; v < mesh.vertexSlots; v++) {
+    if (mesh.vDeleted[v]) continue;
     const x = p[3 * v];
     const y = p[3 * v + 1];
     const z = p[3 * v + 2];
@@ -157,6 +159,29 @@ export function boundingBox(mesh: HalfedgeMesh): BoundingBox | null {
     if (z > max[2]) max[2] = z;
   }
   return any ? { min, max } : null;
+}
+
+export interface BoundingSphere {
+  center: [number, number, number];
+  radius: number;
+}
+
+/**
+ * Sphere around the live vertices with finite coordinates, or null when there are none: centred
+ * in their bounding box (as three.js bounds a geometry), as large as the farthest vertex from there.
+ */
+export function boundingSphere(mesh: HalfedgeMesh, box = boundingBox(mesh)): BoundingSphere | null {
+  if (!box) return null;
+  const p = mesh.positions;
+  const center: [number, number, number] = [(box.min[0] + box.max[0]) / 2, (box.min[1] + box.max[1]) / 2, (box.min[2] + box.max[2]) / 2];
+  let farthest = 0;
+  for (let v = 0; v < mesh.vertexSlots; v++) {
+    if (mesh.vDeleted[v]) continue;
+    const squared = (p[3 * v] - center[0]) ** 2 + (p[3 * v + 1] - center[1]) ** 2 + (p[3 * v + 2] - center[2]) ** 2;
+    // a vertex with a coordinate that is not finite is left out, as from the box
+    if (squared > farthest && Number.isFinite(squared)) farthest = squared;
+  }
+  return { center, radius: Math.sqrt(farthest) };
 }
 
 export interface TriangleQuality {

@@ -3,7 +3,7 @@
  * that framing shows whole.
  */
 import { Box3, Vector3 } from 'three';
-import { faceVectorArea, faceVertices, type HalfedgeMesh, vertexAdjacentFaces } from '../core/index.js';
+import { boundingBox, boundingSphere, faceVectorArea, faceVertices, type HalfedgeMesh, vertexAdjacentFaces } from '../core/index.js';
 import { selectionHighlight } from './highlights.js';
 import type { Convention } from './records.js';
 import type { Selection } from './selection.js';
@@ -16,13 +16,9 @@ export interface Bounds {
 
 /** The whole mesh. */
 export function meshBounds(mesh: HalfedgeMesh): Bounds {
-  const box = new Box3();
-  const p = mesh.positions;
-  for (const v of mesh.vertices()) box.expandByPoint(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2]));
-  const centre = box.getCenter(new Vector3());
-  let radius = 0;
-  for (const v of mesh.vertices()) radius = Math.max(radius, centre.distanceTo(new Vector3(p[3 * v], p[3 * v + 1], p[3 * v + 2])));
-  return { box, radius };
+  const box = boundingBox(mesh);
+  if (!box) return { box: new Box3(), radius: 0 };
+  return { box: new Box3(new Vector3(...box.min), new Vector3(...box.max)), radius: boundingSphere(mesh, box)!.radius };
 }
 
 /** An element, the faces around it and everything its highlight draws (the arrows of its pointers). */

@@ -11,6 +11,7 @@
  */
 import { transferHandlers } from 'comlink';
 import {
+  type BoundingSphere,
   type BuildReport,
   changeBuffers,
   type ChangeRecord,
@@ -85,19 +86,13 @@ export interface RenderBuffers {
   /** The normal of the plane every face lies in, for a 2D mesh; null for a 3D one. */
   planeNormal: [number, number, number] | null;
   /** A sphere around every live vertex, measured here rather than on the page's thread. */
-  bounds: Bounds;
+  bounds: BoundingSphere;
   /**
    * Copies of `positions` and `triangles` for the picking worker (the page draws from the
    * originals), made here so that the page only passes them on; null up to PICK_IN_WORKER_ABOVE
    * triangles, where the page picks by itself.
    */
   picking: { positions: Float32Array; triangles: Uint32Array } | null;
-}
-
-/** A bounding sphere: the middle of the bounding box, and the distance to the vertex farthest from it. */
-export interface Bounds {
-  center: [number, number, number];
-  radius: number;
 }
 
 /** A patch that writes more positions than this carries the bounds measured again; one that writes fewer, the page grows its own to take them in. */
@@ -121,7 +116,7 @@ export interface RenderPatch {
    */
   picking: RenderWrite[] | null;
   /** The bounds again, when the patch writes more than REBOUND_ABOVE positions; else null. */
-  bounds: Bounds | null;
+  bounds: BoundingSphere | null;
 }
 
 /**

@@ -15,10 +15,10 @@
  * The session keeps one `RenderLayout` for what the page holds: `full()` lays the mesh out
  * afresh, `patch(change)` says what to rewrite, or null when a fresh layout is the better answer.
  */
-import type { ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
-import { faceNormal } from '../core/index.js';
+import type { BoundingSphere, ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
+import { boundingSphere, faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
-import { type Bounds, PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
+import { PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
 import { faceTriangles } from '../core/face-triangles.js';
 
 /** Spare room in every buffer, so that edits rarely need a fresh layout. */
@@ -250,29 +250,9 @@ function positionWrites(mesh: HalfedgeMesh, moved: ValueChange[], touched: Set<n
   return [{ buffer: 'positions', offset: 3 * first, data: new Float32Array(mesh.positions.subarray(3 * first, 3 * last + 3)) }];
 }
 
-/** The bounding sphere of the live vertices (three.js's way: the box's middle, then the farthest vertex). */
-function boundsOf(mesh: HalfedgeMesh): Bounds {
-  const p = mesh.positions;
-  const low = [Infinity, Infinity, Infinity];
-  const high = [-Infinity, -Infinity, -Infinity];
-  for (let v = 0; v < mesh.vertexSlots; v++) {
-    if (mesh.vDeleted[v]) continue;
-    for (let k = 0; k < 3; k++) {
-      low[k] = Math.min(low[k], p[3 * v + k]);
-      high[k] = Math.max(high[k], p[3 * v + k]);
-    }
-  }
-  if (low[0] > high[0]) return { center: [0, 0, 0], radius: 0 };
-  const center: [number, number, number] = [(low[0] + high[0]) / 2, (low[1] + high[1]) / 2, (low[2] + high[2]) / 2];
-  let farthest = 0;
-  for (let v = 0; v < mesh.vertexSlots; v++) {
-    if (mesh.vDeleted[v]) continue;
-    const dx = p[3 * v] - center[0];
-    const dy = p[3 * v + 1] - center[1];
-    const dz = p[3 * v + 2] - center[2];
-    farthest = Math.max(farthest, dx * dx + dy * dy + dz * dz);
-  }
-  return { center, radius: Math.sqrt(farthest) };
+/** The bounding sphere of the live vertices (none: a point at the origin). */
+function boundsOf(mesh: HalfedgeMesh): BoundingSphere {
+  return boundingSphere(mesh) ?? { center: [0, 0, 0], radius: 0 };
 }
 
 function writeEdge(mesh: HalfedgeMesh, e: number, edges: Uint32Array, at: number): void {

@@ -3,8 +3,8 @@
  * after a face shrank and grew back many times (its range stays, its polygon count must not drift).
  */
 import { describe, expect, it } from 'vitest';
-import { applyChange, buildMesh, type ChangeRecord, grid, invertChange, noChange, positionsChange, smooth, triangulateFace, uvSphere } from '../../src/index.js';
-import { type Bounds, REBOUND_ABOVE, type RenderBuffers } from '../../src/workers/protocol.js';
+import { applyChange, type BoundingSphere, buildMesh, type ChangeRecord, grid, invertChange, noChange, positionsChange, smooth, triangulateFace, uvSphere } from '../../src/index.js';
+import { REBOUND_ABOVE, type RenderBuffers } from '../../src/workers/protocol.js';
 import { RenderLayout } from '../../src/workers/render.js';
 
 /** The triangles the buffers draw, each as its sorted corners and its face. */
@@ -57,7 +57,7 @@ describe('the render layout, patched', () => {
     const { mesh } = buildMesh(uvSphere(64, 96));
     expect(mesh.vertexSlots).toBeGreaterThan(REBOUND_ABOVE);
     const layout = new RenderLayout();
-    const holdsEveryVertex = (bounds: Bounds) => {
+    const holdsEveryVertex = (bounds: BoundingSphere) => {
       for (const v of mesh.vertices()) {
         const p = mesh.position(v);
         expect(Math.hypot(p[0] - bounds.center[0], p[1] - bounds.center[1], p[2] - bounds.center[2])).toBeLessThanOrEqual(bounds.radius * (1 + 1e-12));
