@@ -8,16 +8,11 @@
  * ```
  */
 import type { ChangeRecord } from './change.js';
-import type { HalfedgeMesh, SlotState } from './mesh.js';
-import { meshArrays } from './mesh-arrays.js';
+import type { HalfedgeMesh } from './mesh.js';
+import { meshArrays, slotCount } from './mesh-arrays.js';
 
 /** The kinds with ids of their own in the mesh's arrays (an edge is its two halfedges). */
 export type ListedKind = 'vertex' | 'face' | 'halfedge';
-
-/** How many slots of `kind` there are. */
-export function slotsOf(mesh: HalfedgeMesh | SlotState, kind: ListedKind): number {
-  return kind === 'vertex' ? mesh.vertexSlots : kind === 'face' ? mesh.faceSlots : 2 * mesh.edgeSlots;
-}
 
 export function isLive(mesh: HalfedgeMesh, kind: ListedKind, id: number): boolean {
   if (kind === 'vertex') return mesh.vDeleted[id] === 0;
@@ -34,7 +29,7 @@ export class LiveIds {
 
   /** The live ids of `kind` in `mesh`: a pass over its deleted flags (none for a compact mesh). */
   static of(mesh: HalfedgeMesh, kind: ListedKind): LiveIds {
-    const slots = slotsOf(mesh, kind);
+    const slots = slotCount(mesh, kind);
     if (mesh.isCompact) return new LiveIds(slots, new Int32Array(0));
     const deleted = kind === 'vertex' ? mesh.vDeleted : kind === 'face' ? mesh.fDeleted : mesh.eDeleted;
     // a halfedge is deleted with its edge
@@ -79,7 +74,7 @@ export class LiveIds {
   after(mesh: HalfedgeMesh, kind: ListedKind, change: ChangeRecord): LiveIds {
     const { dead } = this;
     const touched = liveIdsTouched(change, kind);
-    const slots = slotsOf(mesh, kind);
+    const slots = slotCount(mesh, kind);
     const out = new Int32Array(dead.length + touched.length);
     let n = 0;
     let from = 0;
@@ -110,7 +105,7 @@ export function liveIdsTouched(change: ChangeRecord, kind: ListedKind): Int32Arr
     if (kind === 'halfedge') ids.push(2 * index[i], 2 * index[i] + 1);
     else ids.push(index[i]);
   }
-  const [low, high] = [slotsOf(change.before, kind), slotsOf(change.after, kind)].sort((a, b) => a - b);
+  const [low, high] = [slotCount(change.before, kind), slotCount(change.after, kind)].sort((a, b) => a - b);
   for (let id = low; id < high; id++) ids.push(id);
   const sorted = Int32Array.from(ids).sort();
   return sorted.filter((id, i) => i === 0 || sorted[i - 1] !== id);

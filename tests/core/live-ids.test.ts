@@ -5,7 +5,7 @@
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { applyChange, buildMesh, collapseEdge, type HalfedgeMesh, invertChange, isLive, type ListedKind, LiveIds, slotsOf } from '../../src/index.js';
+import { applyChange, buildMesh, collapseEdge, type HalfedgeMesh, invertChange, isLive, type ListedKind, LiveIds, slotCount } from '../../src/index.js';
 import { editSequences, runEdits } from './edit-sequences.js';
 import { edgeBetween, square } from '../edits/helpers.js';
 
@@ -15,7 +15,7 @@ const kinds: ListedKind[] = ['vertex', 'face', 'halfedge'];
 /** The live ids, one by one. */
 function plainList(mesh: HalfedgeMesh, kind: ListedKind): number[] {
   const ids: number[] = [];
-  for (let id = 0; id < slotsOf(mesh, kind); id++) if (isLive(mesh, kind, id)) ids.push(id);
+  for (let id = 0; id < slotCount(mesh, kind); id++) if (isLive(mesh, kind, id)) ids.push(id);
   return ids;
 }
 
@@ -29,7 +29,7 @@ describe('LiveIds', () => {
       expect(live.dead.length, kind).toBeGreaterThan(0);
       expect(live.count).toBe(list.length);
       expect(list.map((_, row) => live.idAt(row))).toEqual(list);
-      for (let id = -1; id <= slotsOf(mesh, kind); id++) expect(live.rowOf(id), `${kind} ${id}`).toBe(list.indexOf(id));
+      for (let id = -1; id <= slotCount(mesh, kind); id++) expect(live.rowOf(id), `${kind} ${id}`).toBe(list.indexOf(id));
     }
   });
 });

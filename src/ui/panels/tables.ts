@@ -5,7 +5,7 @@
  * 100k-face mesh scrolls as smoothly as a cube. Deleted slots (an operation leaves them until the
  * mesh is compacted) are not rows: the tables list the mesh as it is. Each table exports as CSV.
  */
-import { type ChangeRecord, type HalfedgeMesh, isLive, type ListedKind, LiveIds, slotsOf } from '../../core/index.js';
+import { type ChangeRecord, type HalfedgeMesh, isLive, type ListedKind, LiveIds, slotCount } from '../../core/index.js';
 import { el, replace } from '../dom.js';
 import { download } from './export.js';
 import { type Convention, round } from '../records.js';
@@ -167,7 +167,7 @@ export class RecordTables {
     const mesh = this.mesh;
     if (!mesh) return '';
     const lines = [this.spec.columns(this.convention).join(',')];
-    for (let id = 0, slots = slotsOf(mesh, this.spec.kind); id < slots; id++) {
+    for (let id = 0, slots = slotCount(mesh, this.spec.kind); id < slots; id++) {
       if (!isLive(mesh, this.spec.kind, id)) continue;
       lines.push(this.spec.row(mesh, id, this.convention).map((cell) => (typeof cell === 'string' ? `"${cell}"` : elementName(cell))).join(','));
     }
