@@ -702,7 +702,7 @@ export class App {
 
   hover(selection: Selection | null): void {
     const hovered = this.inspection.hover(this.mesh, selection);
-    if (this.mesh && hovered) this.hoverLayer.show(this.mesh, hoverHighlight(this.mesh, hovered), this.scale);
+    if (this.mesh && hovered) this.hoverLayer.show(this.mesh, hoverHighlight(hovered), this.scale);
     else this.hoverLayer.clear();
     this.viewer.requestRender();
   }

@@ -93,7 +93,7 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
 }
 
 /** The lighter preview of what a click would select. */
-export function hoverHighlight(mesh: HalfedgeMesh, s: Selection): HighlightSpec {
+export function hoverHighlight(s: Selection): HighlightSpec {
   const spec = emptyHighlight();
   const color = colors.selected;
   if (s.kind === 'halfedge') spec.halfedges.push({ id: s.id, color });
