@@ -83,7 +83,10 @@ export function cannotSmooth(mesh: HalfedgeMesh, options: SmoothingOptions): str
  */
 export function smoothing(mesh: HalfedgeMesh, options: SmoothingOptions): Operation {
   requireApplicable(mesh, options);
-  return smoothingPhases(mesh, settingsOf(options), true);
+  const settings = settingsOf(options);
+  // prepared here rather than in the first phase, so that stepping costs only the steps
+  const smoother = new LaplacianSmoother(mesh, settings.boundary);
+  return smoothingPhases(smoother, settings, smoother.movableVertices());
 }
 
 /**
@@ -93,17 +96,17 @@ export function smoothing(mesh: HalfedgeMesh, options: SmoothingOptions): Operat
  */
 export function smooth(mesh: HalfedgeMesh, options: SmoothingOptions): void {
   requireApplicable(mesh, options);
-  const phases = smoothingPhases(mesh, settingsOf(options), false);
+  const settings = settingsOf(options);
+  const phases = smoothingPhases(new LaplacianSmoother(mesh, settings.boundary), settings, null);
   while (!phases.next().done) {
     // straight through: the phases matter only when stepping
   }
 }
 
-/** The phases; `listIds` false leaves their id lists and values out (a run straight through). */
-function* smoothingPhases(mesh: HalfedgeMesh, settings: SmoothingSettings, listIds: boolean): Operation {
+/** The phases; without `movable` (a run straight through) they leave out their id lists and values. */
+function* smoothingPhases(smoother: LaplacianSmoother, settings: SmoothingSettings, movable: Int32Array | null): Operation {
   const { method, iterations, lambda, mu } = settings;
-  const smoother = new LaplacianSmoother(mesh, settings.boundary);
-  const movable = listIds ? smoother.movableVertices() : null;
+  const { mesh } = smoother;
 
   /** One Laplacian step of size `step`, as a phase. */
   const stepPhase = (step: number, name: string, explanation: string): Phase => {

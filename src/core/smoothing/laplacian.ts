@@ -35,6 +35,15 @@ import type { HalfedgeMesh } from '../mesh.js';
 
 export type BoundaryRule = 'fixed' | 'smooth';
 
+/*
+ * What a step does with a vertex, known once (smoothing moves vertices but never changes the
+ * connectivity): an isolated or deleted one stays; a boundary one stays, or follows its two
+ * neighbours along the boundary; an interior one goes towards the weighted mean of its neighbours.
+ */
+const ISOLATED = 0;
+const BOUNDARY = 1;
+const INTERIOR = 2;
+
 /** Scratch arrays for repeated steps on one mesh, sized from its slot counts once. */
 export class LaplacianSmoother {
   /** Weight of each edge slot. */
@@ -43,6 +52,8 @@ export class LaplacianSmoother {
   private readonly sums: Float64Array;
   /** Σ w_ij per vertex. */
   private readonly weightSums: Float64Array;
+  /** Each vertex's role (ISOLATED, BOUNDARY, INTERIOR): read in order, where looking at its halfedge's face would be a read at random. */
+  private readonly roles: Uint8Array;
 
   constructor(
     readonly mesh: HalfedgeMesh,
@@ -51,6 +62,11 @@ export class LaplacianSmoother {
     this.weights = new Float64Array(mesh.edgeSlots).fill(1);
     this.sums = new Float64Array(3 * mesh.vertexSlots);
     this.weightSums = new Float64Array(mesh.vertexSlots);
+    this.roles = new Uint8Array(mesh.vertexSlots);
+    for (let v = 0; v < mesh.vertexSlots; v++) {
+      const h = mesh.vHalfedge[v];
+      this.roles[v] = h === -1 ? ISOLATED : mesh.heFace[h] === -1 ? BOUNDARY : INTERIOR;
+    }
   }
 
   /** Sets every edge's weight to (cot α + cot β) / 2 at the current positions (triangles only). */
@@ -94,9 +110,9 @@ export class LaplacianSmoother {
    * how far each vertex moved into `distances` when it is given.
    */
   step(step: number, distances?: Float32Array): void {
-    const { heNext, hePrev, heVertex, heFace, vHalfedge, eDeleted } = this.mesh;
+    const { heNext, hePrev, heVertex, vHalfedge, eDeleted } = this.mesh;
     const p = this.mesh.positions;
-    const { weights, sums, weightSums } = this;
+    const { weights, sums, weightSums, roles } = this;
     const fixed = this.boundary === 'fixed';
     const V = this.mesh.vertexSlots;
 
@@ -121,29 +137,26 @@ export class LaplacianSmoother {
     // the new positions, into `sums` (each vertex reads only its own sum and old positions)
     for (let v = 0; v < V; v++) {
       const o = 3 * v;
-      const h = vHalfedge[v];
-      // isolated (or deleted) vertex: it stays
+      const role = roles[v];
       let mx = p[o];
       let my = p[o + 1];
       let mz = p[o + 2];
-      if (h !== -1) {
-        // boundary vertex: it stays, or follows its two neighbours along the boundary
-        if (heFace[h] === -1) {
-          if (!fixed) {
-            const a = 3 * heVertex[heNext[h]];
-            const b = 3 * heVertex[hePrev[h]];
-            mx = (p[a] + p[b]) / 2;
-            my = (p[a + 1] + p[b + 1]) / 2;
-            mz = (p[a + 2] + p[b + 2]) / 2;
-          }
+      if (role === BOUNDARY) {
+        if (!fixed) {
+          const h = vHalfedge[v];
+          const a = 3 * heVertex[heNext[h]];
+          const b = 3 * heVertex[hePrev[h]];
+          mx = (p[a] + p[b]) / 2;
+          my = (p[a + 1] + p[b + 1]) / 2;
+          mz = (p[a + 2] + p[b + 2]) / 2;
         }
-        // interior vertex: the weighted mean of its neighbours (it stays if every weight is 0)
-        else if (weightSums[v] > 0) {
-          const w = weightSums[v];
-          mx = sums[o] / w;
-          my = sums[o + 1] / w;
-          mz = sums[o + 2] / w;
-        }
+      }
+      // (it stays if every weight is 0)
+      else if (role === INTERIOR && weightSums[v] > 0) {
+        const w = weightSums[v];
+        mx = sums[o] / w;
+        my = sums[o + 1] / w;
+        mz = sums[o + 2] / w;
       }
       sums[o] = p[o] + step * (mx - p[o]);
       sums[o + 1] = p[o + 1] + step * (my - p[o + 1]);
@@ -153,7 +166,11 @@ export class LaplacianSmoother {
     if (distances) {
       for (let v = 0; v < V; v++) {
         const o = 3 * v;
-        distances[v] = Math.hypot(sums[o] - p[o], sums[o + 1] - p[o + 1], sums[o + 2] - p[o + 2]);
+        const dx = sums[o] - p[o];
+        const dy = sums[o + 1] - p[o + 1];
+        const dz = sums[o + 2] - p[o + 2];
+        // not Math.hypot, which costs ten times as much; a distance is only a colour here
+        distances[v] = Math.sqrt(dx * dx + dy * dy + dz * dz);
       }
     }
     p.set(sums);
@@ -161,14 +178,13 @@ export class LaplacianSmoother {
 
   /** The vertices a step may move: every live, connected one, less the boundary when it is fixed. */
   movableVertices(): Int32Array {
-    const { heFace, vHalfedge } = this.mesh;
+    const { roles } = this;
     const fixed = this.boundary === 'fixed';
     // straight into a typed array (a million ids through a list cost more than the step)
     const ids = new Int32Array(this.mesh.vertexSlots);
     let count = 0;
-    for (let v = 0; v < this.mesh.vertexSlots; v++) {
-      const h = vHalfedge[v];
-      if (h !== -1 && (!fixed || heFace[h] !== -1)) ids[count++] = v;
+    for (let v = 0; v < roles.length; v++) {
+      if (roles[v] === INTERIOR || (roles[v] === BOUNDARY && !fixed)) ids[count++] = v;
     }
     return ids.slice(0, count);
   }
