@@ -28,9 +28,14 @@ export function faceVectorArea(mesh: HalfedgeMesh, f: number, out: number[] = [0
   return out;
 }
 
+/** Scratch for the passes over every face below: a fresh array per face would cost as much as the pass. */
+const scratch = [0, 0, 0];
+
 export function faceArea(mesh: HalfedgeMesh, f: number): number {
-  const [x, y, z] = faceVectorArea(mesh, f);
-  return Math.hypot(x, y, z);
+  const [x, y, z] = faceVectorArea(mesh, f, scratch);
+  // not Math.hypot, which costs ten times as much in a pass over every face; its guard against
+  // overflow would matter only for coordinates beyond 1e150
+  return Math.sqrt(x * x + y * y + z * z);
 }
 
 /** Unit normal of face `f` (zero for a face of zero area). */
@@ -101,7 +106,7 @@ export function vertexNormals(mesh: HalfedgeMesh): Float64Array {
 
 export function surfaceArea(mesh: HalfedgeMesh): number {
   let area = 0;
-  for (const f of mesh.faces()) area += faceArea(mesh, f);
+  for (let f = 0; f < mesh.faceSlots; f++) if (!mesh.fDeleted[f]) area += faceArea(mesh, f);
   return area;
 }
 
@@ -112,7 +117,8 @@ export function surfaceArea(mesh: HalfedgeMesh): number {
 export function signedVolume(mesh: HalfedgeMesh): number {
   const { heNext, heVertex, positions: p } = mesh;
   let sixVolume = 0;
-  for (const f of mesh.faces()) {
+  for (let f = 0; f < mesh.faceSlots; f++) {
+    if (mesh.fDeleted[f]) continue;
     const start = mesh.fHalfedge[f];
     const o = 3 * heVertex[start];
     let h = heNext[start];
@@ -203,7 +209,8 @@ export function triangleQuality(mesh: HalfedgeMesh): TriangleQuality | null {
   let min = Infinity;
   let max = 0;
   let sum = 0;
-  for (const f of mesh.faces()) {
+  for (let f = 0; f < mesh.faceSlots; f++) {
+    if (mesh.fDeleted[f]) continue;
     const h0 = mesh.fHalfedge[f];
     const h1 = heNext[h0];
     const h2 = heNext[h1];
@@ -212,13 +219,10 @@ export function triangleQuality(mesh: HalfedgeMesh): TriangleQuality | null {
     const a = 3 * heVertex[h0];
     const b = 3 * heVertex[h1];
     const c = 3 * heVertex[h2];
-    const ab = Math.hypot(p[b] - p[a], p[b + 1] - p[a + 1], p[b + 2] - p[a + 2]);
-    const bc = Math.hypot(p[c] - p[b], p[c + 1] - p[b + 1], p[c + 2] - p[b + 2]);
-    const ca = Math.hypot(p[a] - p[c], p[a + 1] - p[c + 1], p[a + 2] - p[c + 2]);
-    const longest = Math.max(ab, bc, ca);
+    const longestSquared = Math.max(squaredDistance(p, a, b), squaredDistance(p, b, c), squaredDistance(p, c, a));
     const area = faceArea(mesh, f);
     // the shortest altitude falls on the longest edge: 2 · area / longest
-    const ratio = (longest * longest) / (2 * area);
+    const ratio = longestSquared / (2 * area);
     if (!(area > 0) || !Number.isFinite(ratio)) {
       degenerate++;
       continue;
@@ -232,6 +236,14 @@ export function triangleQuality(mesh: HalfedgeMesh): TriangleQuality | null {
   return measured === 0
     ? { count, degenerate, min: NaN, mean: NaN, max: NaN }
     : { count, degenerate, min, mean: sum / measured, max };
+}
+
+/** |p_b − p_a|², for vertex offsets into the positions. */
+function squaredDistance(p: Float64Array, a: number, b: number): number {
+  const dx = p[b] - p[a];
+  const dy = p[b + 1] - p[a + 1];
+  const dz = p[b + 2] - p[a + 2];
+  return dx * dx + dy * dy + dz * dz;
 }
 
 function normalize(v: number[]): number[] {
