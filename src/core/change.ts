@@ -216,6 +216,16 @@ export function changesLiveIds(record: ChangeRecord): boolean {
   return record.pointers.array.some((array) => meshArrays[array].refers === null);
 }
 
+/**
+ * Whether the change only rewrites attribute values (a smoothing step moves vertices): no pointer
+ * or flag written, no slot brought into use or given up, so everything that follows from the
+ * connectivity alone (validity, components, genus) is as it was.
+ */
+export function onlyChangesValues(record: ChangeRecord): boolean {
+  const { before, after } = record;
+  return before.vertexSlots === after.vertexSlots && before.edgeSlots === after.edgeSlots && before.faceSlots === after.faceSlots && record.pointers.array.length === 0;
+}
+
 /** Elements by kind, each list in increasing order (an edge is listed as its two halfedges). */
 export interface TouchedElements {
   vertices: Int32Array;

@@ -154,11 +154,18 @@ export function meshStats(mesh: HalfedgeMesh, report?: BuildReport): MeshStats {
     manifold,
     orientable,
     faceDegrees,
+    ...geometryStats(mesh, closed),
+    componentDetails: components,
+  };
+}
+
+/** The statistics that depend on where the vertices are; `closed`: whether the mesh has no boundary (then it has a volume). */
+export function geometryStats(mesh: HalfedgeMesh, closed: boolean): Pick<MeshStats, 'boundingBox' | 'surfaceArea' | 'volume' | 'triangleQuality'> {
+  return {
     boundingBox: boundingBox(mesh),
     surfaceArea: surfaceArea(mesh),
     volume: closed && mesh.nFaces > 0 ? signedVolume(mesh) : null,
     triangleQuality: triangleQuality(mesh),
-    componentDetails: components,
   };
 }
 

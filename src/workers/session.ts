@@ -21,6 +21,7 @@ import {
   type Operation,
   type Phase,
   noChange,
+  onlyChangesValues,
   phaseDiff,
   pointerCopy,
   pointerDiffOf,
@@ -37,7 +38,7 @@ import { applyEdit, type EditRequest, operationLabel, type OperationRequest, sta
 import { EDIT_ROOM, History } from './history.js';
 import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails, SnapshotVerbs } from './protocol.js';
 import { RenderLayout } from './render.js';
-import { fullDetails, patchedDetails } from './snapshot.js';
+import { fullDetails, movedDetails, patchedDetails } from './snapshot.js';
 
 /** What the session remembers with each mesh of the history, to show it again. */
 interface EntryInfo {
@@ -79,6 +80,11 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
   private readonly layout = new RenderLayout();
   /** The counts and checks of the last snapshot sent: a full pass, or patched (see `patchedDetails`). */
   private lastDetails: SnapshotDetails | null = null;
+  /**
+   * Whether the connectivity is still that of the last full pass (only vertices moved since, as
+   * smoothing does): `details()` then measures the surface again and keeps the rest.
+   */
+  private connectivityChecked = false;
   private progress: ProgressListener | null = null;
 
   setProgressListener(listener: ProgressListener | null): void {
@@ -248,7 +254,9 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
   details(): SnapshotDetails {
     const entry = this.history.entry();
     const report = this.stepping ? null : (entry?.info.report ?? null);
-    this.lastDetails = fullDetails(this.shownMesh(), report, this.version);
+    this.lastDetails =
+      this.lastDetails && this.connectivityChecked ? movedDetails(this.shownMesh(), this.lastDetails, this.version) : fullDetails(this.shownMesh(), report, this.version);
+    this.connectivityChecked = true;
     return this.lastDetails;
   }
 
@@ -270,6 +278,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     this.sent = { version, state: this.state };
     const report = stepping ? null : info.report;
     this.lastDetails = patch ? patchedDetails(mesh, patch.change, this.lastDetails!, version) : fullDetails(mesh, report, version);
+    this.connectivityChecked = patch ? this.connectivityChecked && onlyChangesValues(patch.change) : true;
     return {
       version,
       mesh: patch ? null : serializeMesh(mesh, EDIT_ROOM),

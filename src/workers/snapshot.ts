@@ -5,7 +5,17 @@
  * χ, the boundary edges, the check of what the change touched) and the full pass on request
  * (`details()`), so the edit is drawn, and checked, without waiting for it.
  */
-import { boundaryEdgesChange, type BuildReport, cannotDecimate, type ChangeRecord, type HalfedgeMesh, meshStats, validate, validateChange } from '../core/index.js';
+import {
+  boundaryEdgesChange,
+  type BuildReport,
+  cannotDecimate,
+  type ChangeRecord,
+  geometryStats,
+  type HalfedgeMesh,
+  meshStats,
+  validate,
+  validateChange,
+} from '../core/index.js';
 import { cannotSmooth } from '../core/smoothing/index.js';
 import { cannotSubdivide, subdivisionSchemes } from '../core/subdivision/index.js';
 import type { SnapshotDetails } from './protocol.js';
@@ -44,6 +54,15 @@ export function patchedDetails(mesh: HalfedgeMesh, change: ChangeRecord, previou
   // sorting out which of them the change may have mended, and they are marked pending.
   const problems = previous.problems.length > 0 ? previous.problems : validateChange(mesh, change, { limit: PROBLEMS_LIMIT });
   return { ...previous, version, stats, problems };
+}
+
+/**
+ * The full details of a mesh whose connectivity is that of `previous`'s full pass (only vertices
+ * moved since): the counts, checks and operations that apply as they were, the measures of the
+ * surface taken again. A pass over the positions, not over everything.
+ */
+export function movedDetails(mesh: HalfedgeMesh, previous: SnapshotDetails, version: number): SnapshotDetails {
+  return { ...previous, version, stats: { ...previous.stats, ...geometryStats(mesh, previous.stats.closed) } };
 }
 
 /** The checks of every face that the page would otherwise run on its thread. */

@@ -239,6 +239,34 @@ describe('a patched snapshot', () => {
     expect(details.stats).toEqual(meshStats(page.mesh!));
   });
 
+  it.each([
+    ['a disk', () => disk(6)],
+    ['a sphere', () => uvSphere(16, 24)],
+  ])('after smoothing steps, details() measures the moved surface and agrees with a full pass, and after an edit too (%s)', async (_, shape) => {
+    const session = new EditingSession();
+    session.adopt(await loadFile(writeSoup(shape(), 'off'), 'model.off'));
+    const page = new PageCopy();
+    page.take(session.snapshot());
+    page.take(session.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 2, boundary: 'smooth' } }));
+    const areas: number[] = [];
+    for (let i = 0; i < 2; i++) {
+      const stepped = page.take(session.step());
+      expect(stepped.pending).toBe(true);
+      const details = session.details();
+      expect(details.version).toBe(stepped.version);
+      expect(details.stats).toEqual(meshStats(page.mesh!));
+      expect(details.problems).toEqual([]);
+      areas.push(details.stats.surfaceArea);
+    }
+    // the surface did move: a measure kept from before the step would not have agreed
+    expect(areas[1]).not.toBe(areas[0]);
+    // the second step ended the operation: an edit now is a patch of the smoothed mesh
+    const edge = [...page.mesh!.edges()].find((e) => canFlipEdge(page.mesh!, e) === null)!;
+    const edited = page.take(session.edit({ kind: 'flip-edge', edge }));
+    expect(edited.pending).toBe(true);
+    expect(session.details().stats).toEqual(meshStats(page.mesh!));
+  });
+
   it('keeps the problems a broken mesh had before the change, for the full pass to sort out', async () => {
     const session = new EditingSession();
     session.adopt(await loadFile(writeSoup(disk(6), 'off'), 'disk.off'));
