@@ -35,7 +35,8 @@ const api = {
    * fraction of a rebuild; a different number of triangles, or grown arrays, need a new one.
    */
   patch(writes: PickingWrite[], triangles: number): void {
-    if (!held) return;
+    // nothing moved (starting an operation): a refit would take a pass over every node for nothing
+    if (!held || (writes.length === 0 && triangles === covered)) return;
     let grown = false;
     for (const { buffer, offset, data } of writes) {
       const target = held[buffer];
