@@ -116,6 +116,26 @@ test.describe('stepping operations, history and export', () => {
     expect(after.genus).toBe(0);
   });
 
+  test('says what an edit did in the status line, and where an undo went back to', async ({ page }) => {
+    await openApp(page, 'disk.off');
+    await expect(page.locator('#status')).toHaveText('Opened disk.off.');
+    // an inner edge of the disk: both of its halfedges have a face
+    const edge = await page.evaluate(() => {
+      const inner = (h: number) => window.halfedgeLab.record(`h${h}`).face.startsWith('f');
+      for (let h = 0; ; h += 2) if (inner(h) && inner(h + 1)) return h >> 1;
+    });
+    await page.evaluate((h) => window.halfedgeLab.select(`h${h}`), 2 * edge);
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    await page.getByRole('button', { name: 'Flip edge' }).click();
+    await expect(page.locator('#status')).toHaveText(new RegExp(`^Flip e${edge}: \\d+ pointers changed\\. Ctrl\\+Z undoes it\\.$`));
+    // the count said is the edit's pointer diff
+    const total = await page.evaluate(() => window.halfedgeLab.state().phase!.diff!.total);
+    expect(total).toBeGreaterThan(0);
+    await expect(page.locator('#status')).toContainText(`: ${total} pointers changed`);
+    await page.keyboard.press('Control+z');
+    await expect(page.locator('#status')).toHaveText('Back to disk.off as opened.');
+  });
+
   test('marks an operation that does not apply, with the reason, and undoes back to the start', async ({ page }) => {
     await openApp(page, 'cube.off');
     await page.getByRole('tab', { name: 'Operate' }).click();

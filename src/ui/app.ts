@@ -366,7 +366,20 @@ export class App {
    */
   request<V extends StudentVerb>(verb: V, ...args: VerbArguments<V>): Promise<Snapshot | null> {
     const ask = () => (this.client[verb] as (...args: unknown[]) => Promise<Snapshot | null>)(...args);
-    return verb === 'undo' || verb === 'redo' || verb === 'jump' ? this.moveInHistory(ask) : this.run(ask);
+    if (verb === 'undo' || verb === 'redo' || verb === 'jump') return this.moveInHistory(ask);
+    return verb === 'edit' ? this.edit(ask) : this.run(ask);
+  }
+
+  /** An edit, saying what it did and how many pointers it wrote (else the status line would still say how the file opened). */
+  private async edit(action: () => Promise<Snapshot | null>): Promise<Snapshot | null> {
+    const snapshot = await this.run(action);
+    if (snapshot) {
+      const { label } = snapshot.history.items[snapshot.history.index]!;
+      const total = snapshot.diff?.total;
+      const written = total === undefined ? '' : `: ${total} pointer${total === 1 ? '' : 's'} changed`;
+      this.say(`${label[0]!.toUpperCase()}${label.slice(1)}${written}. Ctrl+Z undoes it.`);
+    }
+    return snapshot;
   }
 
   /** Undo, redo or a jump, saying where in the history (and which model) the view now is. */
