@@ -6,10 +6,10 @@
 import { Vector3 } from 'three';
 import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident } from '../core/index.js';
 import { colors } from './colors.js';
-import { CancelledError, SessionClient } from '../workers/client.js';
+import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
-import type { OpenOptions, StudentVerb, VerbArguments } from '../workers/protocol.js';
-import { byId, el, replace } from './dom.js';
+import type { StudentVerb, VerbArguments } from '../workers/protocol.js';
+import { byId, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, problemHighlight, quizHighlight } from './highlights.js';
 import { meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
@@ -33,7 +33,8 @@ import { pick, type PickFilter } from './scene/picking.js';
 import { PlaneGizmo } from './scene/plane-gizmo.js';
 import { SurfaceLayer } from './scene/surface.js';
 import { Viewer } from './scene/viewer.js';
-import { handleKey } from './keys.js';
+import { Opening } from './opening.js';
+import { type Tab, tabs, wireControls } from './controls.js';
 import { Inspection } from './inspection.js';
 import { ViewDetail } from './view-detail.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
@@ -41,19 +42,12 @@ import { isRight } from './quiz.js';
 import { encodeViewState, openedEntry, type ReplayStep, replayable, type ViewState } from './share.js';
 import type { PanelName } from './embed.js';
 
-export interface SampleModel {
-  file: string;
-  title: string;
-}
-
 /** Label every vertex and face when the mesh has at most this many of them. */
 const MAX_ID_LABELS = 400;
 
 /** How long the changes must pause before the full counts and checks are asked for. */
 const DETAILS_AFTER_MS = 400;
 
-const tabs = ['inspect', 'operate', 'quiz', 'practice', 'file'] as const;
-export type Tab = (typeof tabs)[number];
 
 /** Where an app lives: the whole page, or the shadow root of a `<halfedge-view>` element. */
 export interface AppHost {
@@ -82,14 +76,11 @@ export class App {
   filter: PickFilter = 'auto';
   /** Larger arrows, dots and type in presentation mode. */
   scale = 1;
-  /** The sample model open now, which a link can name; null for a file of the user's. */
-  private sample: string | null = null;
-  /** The files the user last opened (picked or dropped), to open again with another weld distance. */
-  private userFiles: File[] | null = null;
   showIds = false;
   /** The last message shown to the student (an error, a walk that led nowhere…). */
   message = '';
-  samples: SampleModel[] = [];
+  /** Files, samples and opening them again. */
+  readonly opening: Opening;
   /** Resolves when the first mesh is on screen. */
   readonly ready: Promise<void>;
   /** The snapshot version last shown, and when it arrived (performance.now()). */
@@ -131,6 +122,18 @@ export class App {
       if (snapshot) this.show(snapshot, false);
     };
 
+    this.opening = new Opening(this.byId('sample-select'), {
+      open: (bytes, name, sample, options) => this.client.open(bytes, name, sample, options),
+      opened: (snapshot, name) => {
+        this.show(snapshot, true);
+        const repairs = snapshot.report?.repairs ?? [];
+        if (repairs.length > 0) this.announceRepairs(name, repairs);
+        else this.say(`Opened ${name}.`);
+      },
+      say: (message, role) => this.say(message, role),
+      showError: (title, message) => this.showError(title, message),
+      hideProgress: () => this.hideProgress(),
+    });
     this.viewer = new Viewer(this.byId('viewport'));
     this.viewer.add(this.surface.group, this.arrows.group, this.phaseLayer.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
     // once the first mesh is drawn, in the time the student takes to look at it
@@ -190,7 +193,7 @@ export class App {
     this.drawLegend();
     renderHelp(this.byId('help-keys'));
     renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), this.inspection.convention);
-    this.wireControls();
+    wireControls(this, { root: this.root, input: this.input, canvas: this.viewer.renderer.domElement, quickToPick: () => this.surface.quickToPick });
     if (this.panels) this.embed(this.panels);
     this.drawPanels();
   }
@@ -252,96 +255,6 @@ export class App {
     };
     this.practicePanel ??= import('./panels/practice.js').then(({ PracticePanel }) => new PracticePanel(this.byId('practice'), actions));
     return this.practicePanel;
-  }
-
-  // -----------------------------------------------------------------------------------------------
-  // Opening meshes
-
-  /**
-   * Opens what was picked or dropped: one mesh file, or a `.gltf` with the files it names (its
-   * `.bin` buffers) picked or dropped together with it.
-   */
-  async openFiles(files: File[], weldTolerance = 0): Promise<boolean> {
-    const main = files.find((f) => /\.gltf$/i.test(f.name)) ?? files.find((f) => !/\.(bin|png|jpe?g|webp|ktx2)$/i.test(f.name)) ?? files[0];
-    if (!main) return false;
-    const others = files.filter((f) => f !== main);
-    const resources = new Map(await Promise.all(others.map(async (f) => [f.name, new Uint8Array(await f.arrayBuffer())] as const)));
-    const opened = await this.openBytes(new Uint8Array(await main.arrayBuffer()), main.name, null, { resources: resources.size > 0 ? resources : undefined, weldTolerance });
-    // kept (a File is a handle, not a copy) to open again with another weld distance
-    if (opened) {
-      this.userFiles = files;
-      this.drawPanels(); // the File tab offers to open it again
-    }
-    return opened;
-  }
-
-  /**
-   * Opens the user's file again, welding its vertices within `weldTolerance` (STL, glTF): the
-   * File tab's Reopen. False when the mesh on screen is not from a file the page still has.
-   */
-  async reopen(weldTolerance: number): Promise<boolean> {
-    if (!(weldTolerance >= 0 && Number.isFinite(weldTolerance))) {
-      this.say(`The weld distance must be a number of 0 or more, not ${weldTolerance}.`, 'alert');
-      return false;
-    }
-    if (!this.userFiles || !this.reopenable) {
-      this.say('Only a file opened from this computer can be opened again; open it once more.', 'alert');
-      return false;
-    }
-    return this.openFiles(this.userFiles, weldTolerance);
-  }
-
-  /** Whether the mesh on screen came from files the page still has (see `reopen`). */
-  private get reopenable(): boolean {
-    return this.userFiles?.some((f) => f.name === this.snapshot?.file?.name) ?? false;
-  }
-
-  /**
-   * Opens a file's bytes; `sample` names the sample model they are (null: a file of the user's).
-   * `options`: the files a `.gltf` names, and the weld distance (see `OpenOptions`).
-   */
-  async openBytes(bytes: Uint8Array, name: string, sample: string | null = null, options: OpenOptions = {}): Promise<boolean> {
-    try {
-      this.say(`Reading ${name}…`);
-      const snapshot = await this.client.open(bytes, name, sample, options);
-      this.show(snapshot, true);
-      const repairs = snapshot.report?.repairs ?? [];
-      if (repairs.length > 0) this.announceRepairs(name, repairs);
-      else this.say(`Opened ${name}.`);
-      return true;
-    } catch (error) {
-      this.hideProgress();
-      this.byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // the menu shows what stays open
-      if (error instanceof CancelledError) this.say(`${error.message}; the previous mesh stays.`);
-      else {
-        this.say(`Could not open ${name}: ${(error as Error).message}. The previous mesh stays.`, 'alert');
-        this.showError(`Could not open ${name}`, `${(error as Error).message}. The mesh you had is still open.`);
-      }
-      return false;
-    } finally {
-      this.hideProgress();
-    }
-  }
-
-  async openSample(file: string): Promise<boolean> {
-    // the list is what exists: a server may answer any other name with its index page
-    if (this.samples.length > 0 && !this.samples.some((s) => s.file === file)) {
-      this.say(`There is no sample called ${file}.`, 'alert');
-      return false;
-    }
-    const url = `${import.meta.env.BASE_URL}models/${encodeURIComponent(file)}`;
-    const response = await fetch(url);
-    if (!response.ok) {
-      this.say(`There is no sample called ${file} (${response.status}).`, 'alert');
-      return false;
-    }
-    return this.openBytes(new Uint8Array(await response.arrayBuffer()), file, file);
-  }
-
-  async loadSampleList(): Promise<void> {
-    const response = await fetch(`${import.meta.env.BASE_URL}models/index.json`);
-    this.samples = response.ok ? ((await response.json()) as SampleModel[]) : [];
-    replace(this.byId('sample-select'), ...this.samples.map((s) => el('option', { value: s.file }, s.title)));
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -419,9 +332,7 @@ export class App {
     this.shown = { version: snapshot.version, at: performance.now() };
     const before = this.snapshot;
     this.snapshot = snapshot;
-    // the sample menu names the model the mesh on screen came from, wherever the history is
-    this.sample = openedEntry(snapshot)?.sample ?? null;
-    this.byId<HTMLSelectElement>('sample-select').value = this.sample ?? ''; // blank for a file of the user's
+    this.opening.shown(snapshot);
     const mesh = (this.mesh = snapshot.mesh);
     this.surface.update(snapshot.render, snapshot.renderPatch);
     // while stepping, a phase may colour the vertices by a value it computed
@@ -797,7 +708,7 @@ export class App {
       renderFileInfo(this.byId('file-info'), snapshot.file, snapshot.report, {
         showProblem: (incident, kind, first) => this.showProblem(incident, kind, first),
         toggleSeams: () => void this.toggleSeams(),
-        reopen: this.reopenable ? (tolerance: number) => void this.reopen(tolerance) : null,
+        reopen: this.opening.reopenable(snapshot.file?.name ?? null) ? (tolerance: number) => void this.opening.reopen(tolerance, snapshot.file?.name ?? null) : null,
         seamsShown: this.seamsShown,
       });
     }
@@ -811,77 +722,6 @@ export class App {
 
   private hideProgress(): void {
     this.byId('progress').hidden = true;
-  }
-
-  private wireControls(): void {
-    const fileInput = this.byId<HTMLInputElement>('file-input');
-    fileInput.addEventListener('change', async () => {
-      await this.openFiles([...(fileInput.files ?? [])]);
-      fileInput.value = '';
-    });
-    this.byId<HTMLSelectElement>('sample-select').addEventListener('change', (event) => void this.openSample((event.target as HTMLSelectElement).value));
-    this.byId<HTMLSelectElement>('pick-filter').addEventListener('change', (event) => (this.filter = (event.target as HTMLSelectElement).value as PickFilter));
-    this.byId<HTMLSelectElement>('convention').addEventListener('change', (event) => this.setConvention((event.target as HTMLSelectElement).value as Convention));
-    this.byId('frame-mesh').addEventListener('click', () => this.frameMesh());
-    this.byId('frame-selection').addEventListener('click', () => this.frameSelection());
-    this.byId('top-view').addEventListener('click', () => this.toggleTopView());
-    this.byId('show-ids').addEventListener('click', () => this.toggleIds());
-    this.byId('tables-fold').addEventListener('click', () => this.showTables(!this.tablesShown));
-    this.byId('walk-back').addEventListener('click', () => this.back());
-    this.byId('cancel').addEventListener('click', () => void this.request('cancel'));
-    this.byId('presentation').addEventListener('click', () => this.setPresentation(this.scale === 1));
-    this.byId('share').addEventListener('click', () => this.shareLink());
-    this.byId('help').addEventListener('click', () => this.toggleHelp());
-    this.byId('help-close').addEventListener('click', () => this.toggleHelp(false));
-    this.byId('error-dismiss').addEventListener('click', () => (this.byId('error-panel').hidden = true));
-    for (const tab of tabs) this.byId(`tab-${tab}`).addEventListener('click', () => this.showTab(tab));
-
-    // drop a file anywhere on the page (anywhere on an embed)
-    const hint = this.byId('drop-hint');
-    const input = this.input as HTMLElement; // the window hears the same events, of the same types
-    input.addEventListener('dragover', (event) => {
-      event.preventDefault();
-      hint.hidden = false;
-    });
-    input.addEventListener('dragleave', (event) => {
-      const to = event.relatedTarget;
-      if (to === null || (input instanceof Node && !input.contains(to as Node))) hint.hidden = true;
-    });
-    input.addEventListener('drop', async (event) => {
-      event.preventDefault();
-      hint.hidden = true;
-      await this.openFiles([...(event.dataTransfer?.files ?? [])]);
-    });
-
-    // a click picks; a drag orbits
-    const canvas = this.viewer.renderer.domElement;
-    let down: { x: number; y: number } | null = null;
-    canvas.addEventListener('pointerdown', (event) => (down = { x: event.offsetX, y: event.offsetY }));
-    canvas.addEventListener('pointerup', (event) => {
-      if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) void this.click(event.offsetX, event.offsetY);
-      down = null;
-    });
-    let hoverPending = false;
-    canvas.addEventListener('pointermove', (event) => {
-      // no hover preview until picking is quick (a big mesh's hierarchy is still being built)
-      if (hoverPending || event.buttons !== 0 || !this.surface.quickToPick) return;
-      hoverPending = true;
-      requestAnimationFrame(async () => {
-        this.hover(await this.pickAt(event.offsetX, event.offsetY));
-        hoverPending = false;
-      });
-    });
-    canvas.addEventListener('pointerleave', () => this.hover(null));
-
-    input.addEventListener('keydown', (event) => {
-      // the element pressed on, inside an embed's shadow root too (where event.target is the embed)
-      const origin = event.composedPath()[0];
-      if (origin instanceof Element && origin.closest('input, select, textarea, [contenteditable]')) return;
-      if (!handleKey(this, event)) return;
-      event.preventDefault();
-      // a key this view used is not also the slide deck's around it (N is "next slide" in reveal.js)
-      event.stopPropagation();
-    });
   }
 
   get helpShown(): boolean {

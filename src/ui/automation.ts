@@ -30,13 +30,13 @@ export function automation(app: App) {
      * weld STL and glTF vertices within this distance.
      */
     open: (bytes: Uint8Array | ArrayBuffer | number[], name: string, files?: Record<string, Uint8Array | ArrayBuffer | number[]>, options: { weldTolerance?: number } = {}) =>
-      app.openBytes(bytesOf(bytes), name, null, {
+      app.opening.openBytes(bytesOf(bytes), name, null, {
         resources: files ? new Map(Object.entries(files).map(([file, data]) => [file, bytesOf(data)])) : undefined,
         weldTolerance: options.weldTolerance,
       }),
     /** Opens one of the sample models by file name (see `samples()`). */
-    openSample: (file: string) => app.openSample(file),
-    samples: () => app.samples.map((s) => s.file),
+    openSample: (file: string) => app.opening.openSample(file),
+    samples: () => app.opening.samples.map((s) => s.file),
     /** Selects an element: `'h17'`, `{ kind: 'vertex', id: 4 }`, or null to clear. */
     select: (element: string | Selection | null) => app.select(element === null ? null : asSelection(element)),
     /** Follows a pointer from the selection: next, prev, twin, face, origin, target, edge, halfedge, twin.next, prev.twin. */

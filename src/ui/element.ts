@@ -82,7 +82,7 @@ export class HalfedgeViewElement extends HTMLElement {
       const bytes = await fetchBytes(url);
       const resources = /\.gltf$/i.test(name) ? await gltfBuffers(bytes, url) : undefined;
       if (open !== this.#opens || app !== this.#app) return;
-      if (await app.openBytes(bytes, name, null, { resources })) this.#applySelection();
+      if (await app.opening.openBytes(bytes, name, null, { resources })) this.#applySelection();
     } catch (error) {
       if (open !== this.#opens || app !== this.#app) return;
       app.say(`Could not open ${src}: ${(error as Error).message}.`, 'alert');

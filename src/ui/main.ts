@@ -20,13 +20,13 @@ window.halfedgeLab = automation(app);
 async function openFirstModel(): Promise<void> {
   const state = decodeViewState(location.search);
   if (state.naming) app.setConvention(state.naming);
-  await app.loadSampleList();
-  const first = app.samples[0]?.file ?? 'tetrahedron.off';
+  await app.opening.loadSampleList();
+  const first = app.opening.samples[0]?.file ?? 'tetrahedron.off';
   if (!state.model) {
-    await app.openSample(first);
-  } else if (await app.openSample(state.model)) {
+    await app.opening.openSample(first);
+  } else if (await app.opening.openSample(state.model)) {
     if (await app.replay(state.steps)) app.applyViewState(state);
-  } else if (await app.openSample(first)) {
+  } else if (await app.opening.openSample(first)) {
     app.say(`This link names a sample that is not here (${state.model}), so ${first} is open instead.`, 'alert');
   }
   if (params.has('embed') && embed.unknown.length > 0) app.say(unknownPanelsMessage(embed.unknown), 'alert');

@@ -1,0 +1,99 @@
+/**
+ * How the page reaches the app: its buttons and menus, files picked or dropped, clicks and hovers
+ * on the canvas, and the keys (whose table is keys.ts). Only wiring: each control calls one of
+ * the app's methods, which the automation interface and the keys call as well.
+ */
+import type { App } from './app.js';
+import { byId } from './dom.js';
+import { handleKey } from './keys.js';
+import type { Convention } from './records.js';
+import type { PickFilter } from './scene/picking.js';
+
+/** The tabs of the side bar, each a button `tab-…` over a pane `pane-…`. */
+export const tabs = ['inspect', 'operate', 'quiz', 'practice', 'file'] as const;
+export type Tab = (typeof tabs)[number];
+
+export interface ControlsHost {
+  /** Holds the markup of layout.html. */
+  root: Document | ShadowRoot;
+  /** Hears the keys and the dropped files: the window for the page, the element for an embed. */
+  input: Window | HTMLElement;
+  canvas: HTMLCanvasElement;
+  /** Whether a pick answers at once (not while a large mesh's hierarchy is still being built). */
+  quickToPick: () => boolean;
+}
+
+export function wireControls(app: App, { root, input, canvas, quickToPick }: ControlsHost): void {
+  const find = <T extends HTMLElement = HTMLElement>(id: string) => byId<T>(root, id);
+  const onClick = (id: string, run: () => void) => find(id).addEventListener('click', run);
+  const onChange = (id: string, run: (value: string) => void) =>
+    find<HTMLSelectElement>(id).addEventListener('change', (event) => run((event.target as HTMLSelectElement).value));
+
+  const fileInput = find<HTMLInputElement>('file-input');
+  fileInput.addEventListener('change', async () => {
+    await app.opening.openFiles([...(fileInput.files ?? [])]);
+    fileInput.value = '';
+  });
+  onChange('sample-select', (file) => void app.opening.openSample(file));
+  onChange('pick-filter', (filter) => (app.filter = filter as PickFilter));
+  onChange('convention', (convention) => app.setConvention(convention as Convention));
+  onClick('frame-mesh', () => app.frameMesh());
+  onClick('frame-selection', () => app.frameSelection());
+  onClick('top-view', () => app.toggleTopView());
+  onClick('show-ids', () => app.toggleIds());
+  onClick('tables-fold', () => app.showTables(!app.tablesShown));
+  onClick('walk-back', () => app.back());
+  onClick('cancel', () => void app.request('cancel'));
+  onClick('presentation', () => app.setPresentation(app.scale === 1));
+  onClick('share', () => app.shareLink());
+  onClick('help', () => app.toggleHelp());
+  onClick('help-close', () => app.toggleHelp(false));
+  onClick('error-dismiss', () => (find('error-panel').hidden = true));
+  for (const tab of tabs) onClick(`tab-${tab}`, () => app.showTab(tab));
+
+  // drop a file anywhere on the page (anywhere on an embed)
+  const hint = find('drop-hint');
+  const target = input as HTMLElement; // the window hears the same events, of the same types
+  target.addEventListener('dragover', (event) => {
+    event.preventDefault();
+    hint.hidden = false;
+  });
+  target.addEventListener('dragleave', (event) => {
+    const to = event.relatedTarget;
+    if (to === null || (target instanceof Node && !target.contains(to as Node))) hint.hidden = true;
+  });
+  target.addEventListener('drop', async (event) => {
+    event.preventDefault();
+    hint.hidden = true;
+    await app.opening.openFiles([...(event.dataTransfer?.files ?? [])]);
+  });
+
+  // a click picks; a drag orbits
+  let down: { x: number; y: number } | null = null;
+  canvas.addEventListener('pointerdown', (event) => (down = { x: event.offsetX, y: event.offsetY }));
+  canvas.addEventListener('pointerup', (event) => {
+    if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) void app.click(event.offsetX, event.offsetY);
+    down = null;
+  });
+  let hoverPending = false;
+  canvas.addEventListener('pointermove', (event) => {
+    // no hover preview until picking is quick (a big mesh's hierarchy is still being built)
+    if (hoverPending || event.buttons !== 0 || !quickToPick()) return;
+    hoverPending = true;
+    requestAnimationFrame(async () => {
+      app.hover(await app.pickAt(event.offsetX, event.offsetY));
+      hoverPending = false;
+    });
+  });
+  canvas.addEventListener('pointerleave', () => app.hover(null));
+
+  target.addEventListener('keydown', (event) => {
+    // the element pressed on, inside an embed's shadow root too (where event.target is the embed)
+    const origin = event.composedPath()[0];
+    if (origin instanceof Element && origin.closest('input, select, textarea, [contenteditable]')) return;
+    if (!handleKey(app, event)) return;
+    event.preventDefault();
+    // a key this view used is not also the slide deck's around it (N is "next slide" in reveal.js)
+    event.stopPropagation();
+  });
+}
