@@ -10,7 +10,7 @@ import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import type { StudentVerb, VerbArguments } from '../workers/protocol.js';
 import { byId, el } from './dom.js';
-import { hoverHighlight, idLabels, phaseHighlight, problemHighlight, quizHighlight } from './highlights.js';
+import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, problemHighlight, quizHighlight } from './highlights.js';
 import { meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
 import { incidentTarget, renderFileInfo } from './panels/file-info.js';
@@ -680,7 +680,10 @@ export class App {
   /** The legend: while stepping, the phase and what its colours mean; else the pointers' colours. */
   private drawLegend(): void {
     const stepping = this.snapshot ? steppingTitle(this.snapshot) : null;
-    const phase = stepping ? { title: stepping, explanation: this.snapshot?.phase?.explanation ?? '' } : null;
+    const shown = this.snapshot?.phase;
+    // only the colours the view shows: a smoothing step marks nothing, its colours are the distances
+    const meanings = shown && this.mesh ? phaseMeanings(phaseHighlight(this.mesh, shown)) : [];
+    const phase = stepping ? { title: stepping, explanation: shown?.explanation ?? '', meanings } : null;
     renderLegend(this.byId('legend'), phase, this.inspection.convention);
   }
 

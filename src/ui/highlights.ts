@@ -122,10 +122,22 @@ export function phaseHighlight(mesh: HalfedgeMesh, phase: Phase): HighlightSpec 
   for (const h of take(phase.rewired?.halfedges, halfedgeAlive)) spec.halfedges.push({ id: h, color: phaseColors.rewired });
   for (const h of take(phase.created?.halfedges, halfedgeAlive)) spec.halfedges.push({ id: h, color: phaseColors.created });
   for (const e of take(phase.created?.edges, (e) => halfedgeAlive(mesh.edgeHalfedge(e)))) spec.edges.push({ id: e, color: phaseColors.created });
-  for (const v of take(phase.moved?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.moved });
+  // a mark on (nearly) every vertex says nothing, and hides the colours a phase puts on them (a
+  // smoothing step moves every vertex and colours each by how far it went)
+  const movedMostly = phase.values?.vertices !== undefined && 2 * (phase.moved?.vertices?.length ?? 0) >= mesh.nVertices;
+  for (const v of take(movedMostly ? undefined : phase.moved?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.moved });
   for (const v of take(phase.created?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.created });
   return spec;
 }
+
+/** What the colours of a phase's marks mean, in the stepper's order: those `spec` uses. */
+export function phaseMeanings(spec: HighlightSpec): PhaseMeaning[] {
+  const used = new Set([...spec.faces, ...spec.halfedges, ...spec.edges, ...spec.vertices].map((mark) => mark.color));
+  return phaseMeaningNames.filter((name) => used.has(phaseColors[name]));
+}
+
+export type PhaseMeaning = keyof typeof phaseColors;
+const phaseMeaningNames = ['created', 'moved', 'rewired'] as const satisfies readonly PhaseMeaning[];
 
 /** A quiz path: the start, each step, and the answer (right in green, a wrong pick in vermillion). */
 export function quizHighlight(mesh: HalfedgeMesh, path: Selection[], picked: Selection | null, right: boolean): HighlightSpec {

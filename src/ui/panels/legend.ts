@@ -5,13 +5,15 @@
  */
 import { legend, phaseColors, swatchStyle } from '../colors.js';
 import { el, replace } from '../dom.js';
+import type { PhaseMeaning } from '../highlights.js';
 import type { Convention } from '../records.js';
 import type { ColourScale } from '../../workers/colour-scale.js';
 
-/** The phase being stepped: its title ("Loop subdivision — phase 2 of 4: …") and explanation. */
+/** The phase being stepped: its title ("Loop subdivision — phase 2 of 4: …"), explanation, and what its marks' colours mean. */
 export interface LegendPhase {
   title: string;
   explanation: string;
+  meanings: readonly PhaseMeaning[];
 }
 
 export function renderLegend(container: HTMLElement, phase: LegendPhase | null, convention: Convention): void {
@@ -31,7 +33,7 @@ export function renderLegend(container: HTMLElement, phase: LegendPhase | null, 
       container,
       el('p', { class: 'legend-phase' }, phase.title),
       sentence ? el('p', { class: 'legend-sentence' }, sentence) : '',
-      ...(['created', 'moved', 'rewired'] as const).map((name) => row(`background:${phaseColors[name]}`, name)),
+      ...phase.meanings.map((name) => row(`background:${phaseColors[name]}`, name)),
     );
     return;
   }
