@@ -458,7 +458,7 @@ export class App {
       steps,
       selection: this.inspection.selection,
       naming: this.inspection.convention,
-      camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom },
+      camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom, shift: this.viewer.targetShift },
       mode: this.viewer.mode,
     };
   }
@@ -471,7 +471,7 @@ export class App {
       this.byId('top-view').setAttribute('aria-pressed', String(state.mode === 'top'));
       this.frameMesh();
     }
-    if (state.camera) this.viewer.setCamera(state.camera.position, state.camera.target, state.camera.zoom);
+    if (state.camera) this.viewer.setCamera(state.camera.position, state.camera.target, state.camera.zoom, state.camera.shift);
     if (state.selection && this.mesh) {
       if (exists(this.mesh, state.selection)) this.select(state.selection);
       else this.say(`This link selects ${elementName(state.selection)}, which ${this.snapshot?.file?.name ?? 'this mesh'} does not have.`, 'alert');

@@ -18,8 +18,11 @@ export interface ViewState {
   selection: Selection | null;
   /** The halfedge naming the view speaks (origin or target); null: the page's default. */
   naming: Convention | null;
-  /** Camera position, orbit target, zoom (orthographic). */
-  camera: { position: number[]; target: number[]; zoom: number } | null;
+  /**
+   * Camera position, orbit target, zoom (orthographic), and where the target is drawn: its shift
+   * from the middle of the view as a share of the width and height (see `Viewer.frame`).
+   */
+  camera: { position: number[]; target: number[]; zoom: number; shift: [number, number] } | null;
   mode: 'perspective' | 'top' | null;
 }
 
@@ -30,7 +33,7 @@ export function encodeViewState(state: ViewState): string {
   if (state.selection) params.set('select', `${{ vertex: 'v', edge: 'e', face: 'f', halfedge: 'h' }[state.selection.kind]}${state.selection.id}`);
   if (state.naming) params.set('naming', state.naming);
   if (state.camera) {
-    const numbers = [...state.camera.position, ...state.camera.target, state.camera.zoom].map((x) => +x.toPrecision(6));
+    const numbers = [...state.camera.position, ...state.camera.target, state.camera.zoom, ...state.camera.shift].map((x) => +x.toPrecision(6));
     params.set('camera', numbers.join(','));
   }
   if (state.mode) params.set('mode', state.mode);
@@ -41,9 +44,15 @@ export function encodeViewState(state: ViewState): string {
 export function decodeViewState(query: string): ViewState {
   const params = new URLSearchParams(query);
   const numbers = (params.get('camera') ?? '').split(',').map(Number);
+  // a link made before the shift was kept has seven numbers: its target was in the middle
   const camera =
-    numbers.length === 7 && numbers.every(Number.isFinite)
-      ? { position: numbers.slice(0, 3), target: numbers.slice(3, 6), zoom: numbers[6] > 0 ? numbers[6] : 1 }
+    (numbers.length === 7 || numbers.length === 9) && numbers.every(Number.isFinite)
+      ? {
+          position: numbers.slice(0, 3),
+          target: numbers.slice(3, 6),
+          zoom: numbers[6] > 0 ? numbers[6] : 1,
+          shift: [Math.max(-0.5, Math.min(0.5, numbers[7] ?? 0)), Math.max(-0.5, Math.min(0.5, numbers[8] ?? 0))] as [number, number],
+        }
       : null;
   const mode = params.get('mode');
   const naming = params.get('naming');

@@ -74,10 +74,14 @@ describe('share links', () => {
       ],
       selection: { kind: 'halfedge' as const, id: 17 },
       naming: 'target' as const,
-      camera: { position: [1, 2.5, -3], target: [0, 0, 0.25], zoom: 1.5 },
+      camera: { position: [1, 2.5, -3], target: [0, 0, 0.25], zoom: 1.5, shift: [0.125, -0.0625] as [number, number] },
       mode: 'top' as const,
     };
     expect(decodeViewState(encodeViewState(state))).toEqual(state);
+  });
+
+  it('read a link made before the camera kept its shift as one whose target is in the middle', () => {
+    expect(decodeViewState('camera=1,2,3,0,0,0,1').camera).toEqual({ position: [1, 2, 3], target: [0, 0, 0], zoom: 1, shift: [0, 0] });
   });
 
   it('drop what is malformed instead of trusting it', () => {

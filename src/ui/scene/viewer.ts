@@ -19,6 +19,7 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
+import { clearSpot } from './clear-spot.js';
 import { placeLabels } from './label-placement.js';
 import { colors } from '../colors.js';
 
@@ -41,6 +42,8 @@ export class Viewer {
   /** Called before each draw (the app shows or hides detail for the zoom). */
   beforeDraw: (() => void) | null = null;
   private needsRender = true;
+  /** Where the framed mesh sits, from the middle of the view, as a share of its width and height (see `frame`). */
+  private shift = { x: 0, y: 0 };
   private disposed = false;
   private readonly resizeObserver = new ResizeObserver(() => this.resize());
   private readonly light = new DirectionalLight(0xffffff, 1.6);
@@ -109,8 +112,12 @@ export class Viewer {
   frame(box: Box3, normal: Vector3 = new Vector3(0, 0, 1), sphereRadius?: number, from?: Vector3): void {
     if (box.isEmpty()) return;
     const centre = box.getCenter(new Vector3());
-    // the box's half-diagonal bounds the points, but a sphere around the points is often tighter
-    const radius = Math.max(sphereRadius ?? box.getSize(new Vector3()).length() / 2, 1e-6);
+    // the box's half-diagonal bounds the points, but a sphere around the points is often tighter;
+    // it goes where the overlays leave room, as large as that room (see clear-spot.ts)
+    const spot = this.clearSpot();
+    const radius = Math.max(sphereRadius ?? box.getSize(new Vector3()).length() / 2, 1e-6) / spot.scale;
+    this.shift = spot.shift;
+    this.applyShift();
     const camera = this.camera;
     if (camera instanceof OrthographicCamera) {
       const up = Math.abs(normal.y) > 0.9 ? new Vector3(0, 0, -1) : new Vector3(0, 1, 0);
@@ -127,7 +134,7 @@ export class Viewer {
         upward = Math.max(upward, Math.abs(offset.dot(screenUp)));
       }
       const aspect = this.aspect();
-      const half = Math.max(upward, across / aspect, 1e-6) * 1.12;
+      const half = (Math.max(upward, across / aspect, 1e-6) * 1.12) / spot.scale;
       Object.assign(camera, { left: -half * aspect, right: half * aspect, top: half, bottom: -half, near: 0.01 * radius, far: 10 * radius, zoom: 1 });
       camera.updateProjectionMatrix();
     } else {
@@ -146,8 +153,15 @@ export class Viewer {
     this.requestRender();
   }
 
+  /** Where the point the camera orbits is drawn: its shift from the middle, as a share of the width and height. */
+  get targetShift(): [number, number] {
+    return [this.shift.x, this.shift.y];
+  }
+
   /** Puts the camera where a shared link says. */
-  setCamera(position: number[], target: number[], zoom: number): void {
+  setCamera(position: number[], target: number[], zoom: number, [x, y]: [number, number] = [0, 0]): void {
+    this.shift = { x, y };
+    this.applyShift();
     const camera = this.camera;
     camera.position.fromArray(position);
     camera.zoom = zoom;
@@ -198,8 +212,31 @@ export class Viewer {
     return width / height;
   }
 
+  /**
+   * Where the overlays leave the most room: that spot's centre relative to the middle (a share of
+   * the width and height) and its size relative to the whole view's.
+   */
+  private clearSpot(): { shift: { x: number; y: number }; scale: number } {
+    const { width, height } = this.size();
+    const canvas = this.renderer.domElement.getBoundingClientRect();
+    const overlays = this.labelObstacles().map((r) => ({ left: r.left - canvas.left, top: r.top - canvas.top, right: r.right - canvas.left, bottom: r.bottom - canvas.top }));
+    const spot = clearSpot(width, height, overlays);
+    const whole = Math.min(width, height) / 2;
+    return { shift: { x: (spot.x - width / 2) / width, y: (spot.y - height / 2) / height }, scale: whole > 0 ? Math.max(spot.radius / whole, 0.1) : 1 };
+  }
+
+  /** Draws the point the camera orbits at the framed spot rather than in the middle (both cameras, for a switch of mode). */
+  private applyShift(): void {
+    const { width, height } = this.size();
+    for (const camera of [this.perspective, this.orthographic]) {
+      if (this.shift.x === 0 && this.shift.y === 0) camera.clearViewOffset();
+      else camera.setViewOffset(width, height, -this.shift.x * width, -this.shift.y * height, width, height);
+    }
+  }
+
   private resize(): void {
     const { width, height } = this.size();
+    this.applyShift();
     this.renderer.setSize(width, height, false);
     this.renderer.domElement.style.width = `${width}px`;
     this.renderer.domElement.style.height = `${height}px`;

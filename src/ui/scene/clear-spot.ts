@@ -1,0 +1,64 @@
+/**
+ * Where on the view a framed mesh goes so that the overlays (the legend, the colour scale, the
+ * counts, the status line) cover none of it: the largest circle inside the view that meets no
+ * overlay. The camera then shows the mesh's bounding sphere in that circle, which in presentation
+ * mode, where the overlays are large, keeps them off the mesh.
+ * ```
+ *   ┌────────┬──────────────┬──────┐
+ *   │ legend │     ╭──╮     │counts│
+ *   ├────────┘    (  ● )    └──────┤
+ *   │              ╰──╯            │
+ *   └status──┘─────────────────────┘
+ * ```
+ */
+
+export interface Rect {
+  left: number;
+  top: number;
+  right: number;
+  bottom: number;
+}
+
+export interface Spot {
+  /** The centre, in the view's pixels. */
+  x: number;
+  y: number;
+  radius: number;
+}
+
+/** Candidate centres along each side of the view (a grid: the overlays are few and boxy). */
+const STEPS = 24;
+/** Below this share of the whole view's circle, a clear spot shows the mesh too small: it goes in the middle, overlays or not. */
+const SMALLEST = 0.5;
+
+/**
+ * The largest circle in a `width` × `height` view, `margin` inside its edges, that meets none of
+ * `overlays` (in the view's pixels); the view's own circle when the overlays leave no room for one
+ * at least `SMALLEST` of its size. Of equal circles, the one nearest the middle.
+ */
+export function clearSpot(width: number, height: number, overlays: readonly Rect[], margin = 0): Spot {
+  const whole = { x: width / 2, y: height / 2, radius: Math.max(0, Math.min(width, height) / 2 - margin) };
+  let best: Spot | null = null;
+  let bestDistance = Infinity;
+  for (let i = 0; i <= STEPS; i++) {
+    for (let j = 0; j <= STEPS; j++) {
+      const x = (width * i) / STEPS;
+      const y = (height * j) / STEPS;
+      let radius = Math.min(x, width - x, y, height - y) - margin;
+      for (const r of overlays) radius = Math.min(radius, distanceToRect(x, y, r));
+      const distance = Math.hypot(x - whole.x, y - whole.y);
+      if (!best || radius > best.radius + 0.5 || (radius > best.radius - 0.5 && distance < bestDistance)) {
+        best = { x, y, radius };
+        bestDistance = distance;
+      }
+    }
+  }
+  return best && best.radius >= SMALLEST * whole.radius ? best : whole;
+}
+
+/** How far (x, y) is from the rectangle: 0 inside it. */
+function distanceToRect(x: number, y: number, r: Rect): number {
+  const dx = Math.max(r.left - x, 0, x - r.right);
+  const dy = Math.max(r.top - y, 0, y - r.bottom);
+  return Math.hypot(dx, dy);
+}

@@ -1,0 +1,26 @@
+import { describe, expect, it } from 'vitest';
+import { clearSpot } from '../../src/ui/scene/clear-spot.js';
+
+describe('the clear spot of a view', () => {
+  it('is the middle of a view with no overlays, as large as the view allows', () => {
+    expect(clearSpot(800, 600, [])).toEqual({ x: 400, y: 300, radius: 300 });
+  });
+
+  it('moves away from a large overlay in a corner, meeting none of it', () => {
+    const legend = { left: 0, top: 0, right: 390, bottom: 300 };
+    const spot = clearSpot(820, 560, [legend]);
+    expect(spot.x).toBeGreaterThan(410);
+    expect(spot.radius).toBeGreaterThan(0.5 * 280);
+    // the circle keeps off the legend and inside the view
+    const dx = Math.max(legend.left - spot.x, 0, spot.x - legend.right);
+    const dy = Math.max(legend.top - spot.y, 0, spot.y - legend.bottom);
+    expect(Math.hypot(dx, dy)).toBeGreaterThanOrEqual(spot.radius);
+    expect(spot.x + spot.radius).toBeLessThanOrEqual(820);
+    expect(spot.y + spot.radius).toBeLessThanOrEqual(560);
+  });
+
+  it('stays in the middle when the overlays leave no room for a circle of a useful size', () => {
+    const band = { left: 0, top: 200, right: 800, bottom: 400 };
+    expect(clearSpot(800, 600, [band])).toEqual({ x: 400, y: 300, radius: 300 });
+  });
+});
