@@ -148,8 +148,8 @@ export class App {
     }));
     this.viewer.controls.addEventListener('end', () => this.detail.refreshIfPartial());
     this.viewer.beforeDraw = () => this.detail.fit();
-    // labels keep off the overlays on the view
-    this.viewer.labelObstacles = () =>
+    // labels and framed meshes keep off the overlays on the view
+    this.viewer.overlays = () =>
       ['legend', 'hud', 'status', 'values-legend'].flatMap((id) => {
         const overlay = this.byId(id);
         return overlay.hidden || !overlay.textContent ? [] : [overlay.getBoundingClientRect()];

@@ -28,8 +28,8 @@ export type ViewMode = 'perspective' | 'top';
 export class Viewer {
   readonly renderer: WebGLRenderer;
   readonly labels: CSS2DRenderer;
-  /** Screen rectangles the labels keep off (the overlays on the view). */
-  labelObstacles: () => DOMRect[] = () => [];
+  /** The overlays on the view (legend, counts…), as screen rectangles: labels keep off them, and framing puts the mesh clear of them. */
+  overlays: () => DOMRect[] = () => [];
   readonly scene = new Scene();
   readonly perspective = new PerspectiveCamera(40, 1, 0.01, 1000);
   readonly orthographic = new OrthographicCamera(-1, 1, 1, -1, 0.01, 1000);
@@ -219,7 +219,7 @@ export class Viewer {
   private clearSpot(): { shift: { x: number; y: number }; scale: number } {
     const { width, height } = this.size();
     const canvas = this.renderer.domElement.getBoundingClientRect();
-    const overlays = this.labelObstacles().map((r) => ({ left: r.left - canvas.left, top: r.top - canvas.top, right: r.right - canvas.left, bottom: r.bottom - canvas.top }));
+    const overlays = this.overlays().map((r) => ({ left: r.left - canvas.left, top: r.top - canvas.top, right: r.right - canvas.left, bottom: r.bottom - canvas.top }));
     const spot = clearSpot(width, height, overlays);
     const whole = Math.min(width, height) / 2;
     return { shift: { x: (spot.x - width / 2) / width, y: (spot.y - height / 2) / height }, scale: whole > 0 ? Math.max(spot.radius / whole, 0.1) : 1 };
@@ -258,7 +258,7 @@ export class Viewer {
     this.beforeDraw?.();
     this.renderer.render(this.scene, this.camera);
     this.labels.render(this.scene, this.camera);
-    placeLabels(this.labels.domElement, this.labelObstacles());
+    placeLabels(this.labels.domElement, this.overlays());
   }
 }
 
