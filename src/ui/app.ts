@@ -152,7 +152,9 @@ export class App {
     this.viewer.overlays = () =>
       ['legend', 'hud', 'status', 'values-legend'].flatMap((id) => {
         const overlay = this.byId(id);
-        return overlay.hidden || !overlay.textContent ? [] : [overlay.getBoundingClientRect()];
+        const rect = overlay.getBoundingClientRect();
+        // an overlay an embed hides by its style has no size, and covers nothing
+        return overlay.hidden || !overlay.textContent || rect.width === 0 || rect.height === 0 ? [] : [rect];
       });
     this.tables = new RecordTables(this.byId('tables'), (s) => this.selectInSight(s), (s) => this.hover(s));
     this.traversal = new TraversalPanel(
@@ -343,7 +345,6 @@ export class App {
       const planar = snapshot.render.planeNormal !== null;
       this.viewer.setMode(planar ? 'top' : 'perspective');
       this.byId('top-view').setAttribute('aria-pressed', String(planar));
-      this.frameMesh();
     }
     // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
     void this.detail.refresh(snapshot.renderPatch !== null);
@@ -366,6 +367,8 @@ export class App {
     else if (this.inspection.marks.quiz) this.quiz.end();
     this.drawSelection();
     this.drawPanels();
+    // framed last: the overlays it keeps the mesh clear of now show this mesh's counts
+    if (frame) this.frameMesh();
     this.markReady();
     if (snapshot.pending) void this.completeDetails(snapshot);
   }

@@ -107,14 +107,14 @@ export class ViewDetail {
       : `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${inspection.selection ? 'selection' : 'centre of the view'}.`;
   }
 
-  /** The face to grow the drawn arrows from: the selection's, or the one in the middle of the view. */
+  /** The face to grow the drawn arrows from: the selection's, or the one where the view is centred (the point it orbits). */
   private async focusFace(mesh: HalfedgeMesh, sameView: boolean): Promise<number> {
     const selected = this.context().inspection.focusFace(mesh);
     if (selected >= 0) return selected;
     const last = this.viewFocus;
     if (sameView && last >= 0 && last < mesh.faceSlots && !mesh.isFaceDeleted(last)) return last;
-    const { width, height } = this.viewer.size();
-    const hit = await this.surface.raycast(this.viewer.ray(width / 2, height / 2));
+    const { x, y } = this.viewer.targetPoint();
+    const hit = await this.surface.raycast(this.viewer.ray(x, y));
     this.viewFocus = hit ? hit.face : -1;
     if (hit) return hit.face;
     for (const f of mesh.faces()) return f;

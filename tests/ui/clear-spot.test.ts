@@ -22,5 +22,9 @@ describe('the clear spot of a view', () => {
   it('stays in the middle when the overlays leave no room for a circle of a useful size', () => {
     const band = { left: 0, top: 200, right: 800, bottom: 400 };
     expect(clearSpot(800, 600, [band])).toEqual({ x: 400, y: 300, radius: 300 });
+    // a small embed with its legend and counts: a clear circle there would show the mesh too small to read
+    const legend = { left: 10, top: 10, right: 215, bottom: 190 };
+    const counts = { left: 245, top: 10, right: 490, bottom: 160 };
+    expect(clearSpot(500, 360, [legend, counts])).toEqual({ x: 250, y: 180, radius: 180 });
   });
 });

@@ -28,23 +28,28 @@ export interface Spot {
 
 /** Candidate centres along each side of the view (a grid: the overlays are few and boxy). */
 const STEPS = 24;
-/** Below this share of the whole view's circle, a clear spot shows the mesh too small: it goes in the middle, overlays or not. */
+/**
+ * A clear spot smaller than this share of the whole view's circle, or than this many pixels
+ * across its radius, shows the mesh too small to read (in a small embed, say): the mesh keeps the
+ * middle and the whole view, overlays or not.
+ */
 const SMALLEST = 0.5;
+const SMALLEST_PIXELS = 150;
 
 /**
- * The largest circle in a `width` × `height` view, `margin` inside its edges, that meets none of
- * `overlays` (in the view's pixels); the view's own circle when the overlays leave no room for one
- * at least `SMALLEST` of its size. Of equal circles, the one nearest the middle.
+ * The largest circle in a `width` × `height` view that meets none of `overlays` (in the view's
+ * pixels); the view's own circle when the overlays leave no room for one large enough (see
+ * `SMALLEST`). Of equal circles, the one nearest the middle.
  */
-export function clearSpot(width: number, height: number, overlays: readonly Rect[], margin = 0): Spot {
-  const whole = { x: width / 2, y: height / 2, radius: Math.max(0, Math.min(width, height) / 2 - margin) };
+export function clearSpot(width: number, height: number, overlays: readonly Rect[]): Spot {
+  const whole = { x: width / 2, y: height / 2, radius: Math.min(width, height) / 2 };
   let best: Spot | null = null;
   let bestDistance = Infinity;
   for (let i = 0; i <= STEPS; i++) {
     for (let j = 0; j <= STEPS; j++) {
       const x = (width * i) / STEPS;
       const y = (height * j) / STEPS;
-      let radius = Math.min(x, width - x, y, height - y) - margin;
+      let radius = Math.min(x, width - x, y, height - y);
       for (const r of overlays) radius = Math.min(radius, distanceToRect(x, y, r));
       const distance = Math.hypot(x - whole.x, y - whole.y);
       if (!best || radius > best.radius + 0.5 || (radius > best.radius - 0.5 && distance < bestDistance)) {
@@ -53,7 +58,7 @@ export function clearSpot(width: number, height: number, overlays: readonly Rect
       }
     }
   }
-  return best && best.radius >= SMALLEST * whole.radius ? best : whole;
+  return best && best.radius >= Math.max(SMALLEST * whole.radius, SMALLEST_PIXELS) ? best : whole;
 }
 
 /** How far (x, y) is from the rectangle: 0 inside it. */

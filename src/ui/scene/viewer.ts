@@ -158,6 +158,12 @@ export class Viewer {
     return [this.shift.x, this.shift.y];
   }
 
+  /** Where the point the camera orbits is drawn, in the canvas's pixels. */
+  targetPoint(): { x: number; y: number } {
+    const { width, height } = this.size();
+    return { x: (0.5 + this.shift.x) * width, y: (0.5 + this.shift.y) * height };
+  }
+
   /** Puts the camera where a shared link says. */
   setCamera(position: number[], target: number[], zoom: number, [x, y]: [number, number] = [0, 0]): void {
     this.shift = { x, y };
