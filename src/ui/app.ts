@@ -48,7 +48,6 @@ const MAX_ID_LABELS = 400;
 /** How long the changes must pause before the full counts and checks are asked for. */
 const DETAILS_AFTER_MS = 400;
 
-
 /** Where an app lives: the whole page, or the shadow root of a `<halfedge-view>` element. */
 export interface AppHost {
   /** Holds the markup of layout.html, in which ids are looked up. */
