@@ -225,6 +225,21 @@ test.describe('the classroom', () => {
       const overlap = (a: DOMRect, b: DOMRect) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
       for (let i = 0; i < boxes.length; i++) for (let j = i + 1; j < boxes.length; j++) expect(overlap(boxes[i]!, boxes[j]!), `overlays ${i} and ${j} overlap`).toBe(false);
       expect(await smallTexts()).toEqual([]);
+      // framed again, the mesh goes where the overlays leave room: none of its vertices is under one
+      await page.keyboard.press('Home');
+      const covered = await page.evaluate((overlays) => {
+        const canvas = document.querySelector('#viewport canvas')!.getBoundingClientRect();
+        const { vertices } = window.halfedgeLab.state().stats!;
+        const under: string[] = [];
+        for (let v = 0; v < vertices; v++) {
+          const at = window.halfedgeLab.screenPosition(`v${v}`);
+          const x = canvas.left + at.x;
+          const y = canvas.top + at.y;
+          if (overlays.some((box) => x >= box.left && x <= box.right && y >= box.top && y <= box.bottom)) under.push(`v${v}`);
+        }
+        return under;
+      }, boxes);
+      expect(covered).toEqual([]);
       await page.screenshot({ path: testInfo.outputPath('presentation-smoothing.png') });
       await page.keyboard.press('x');
       await expect(page.locator('#values-legend')).toBeHidden();
