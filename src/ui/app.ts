@@ -9,7 +9,7 @@ import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import type { StudentVerb, VerbArguments } from '../workers/protocol.js';
-import { byId, el } from './dom.js';
+import { byId, capitalized, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, problemHighlight, quizHighlight } from './highlights.js';
 import { meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
@@ -99,6 +99,8 @@ export class App {
   readonly quiz: QuizPanel;
   /** The Practice tab, loaded with its editor and grader when first asked for (see `practice()`). */
   private practicePanel: Promise<PracticePanel> | null = null;
+  /** The phase marks last worked out, and the snapshot they are of (see `phaseMarks`). */
+  private marked: { snapshot: Snapshot; marks: HighlightSpec } | null = null;
   private readonly gizmo: PlaneGizmo;
   private readonly detail: ViewDetail;
   private markReady!: () => void;
@@ -237,7 +239,7 @@ export class App {
           this.show(await this.client.practice(mesh, label, diff), frame);
           this.inspection.marks.practice = marks;
           this.drawSelection();
-          this.say(`${label[0].toUpperCase()}${label.slice(1)}.`);
+          this.say(`${capitalized(label)}.`);
         } catch (error) {
           this.say((error as Error).message, 'alert');
         }
@@ -291,7 +293,7 @@ export class App {
       const { label } = snapshot.history.items[snapshot.history.index]!;
       const total = snapshot.diff?.total;
       const written = total === undefined ? '' : `: ${total} pointer${total === 1 ? '' : 's'} changed`;
-      this.say(`${label[0]!.toUpperCase()}${label.slice(1)}${written}. Ctrl+Z undoes it.`);
+      this.say(`${capitalized(label)}${written}. Ctrl+Z undoes it.`);
     }
     return snapshot;
   }
@@ -682,19 +684,26 @@ export class App {
   /** The legend: while stepping, the phase and what its colours mean; else the pointers' colours. */
   private drawLegend(): void {
     const stepping = this.snapshot ? steppingTitle(this.snapshot) : null;
-    const shown = this.snapshot?.phase;
+    const marks = this.phaseMarks();
     // only the colours the view shows: a smoothing step marks nothing, its colours are the distances
-    const meanings = shown && this.mesh ? phaseMeanings(phaseHighlight(this.mesh, shown)) : [];
-    const phase = stepping ? { title: stepping, explanation: shown?.explanation ?? '', meanings } : null;
+    const phase = stepping ? { title: stepping, explanation: this.snapshot?.phase?.explanation ?? '', meanings: marks ? phaseMeanings(marks) : [] } : null;
     renderLegend(this.byId('legend'), phase, this.inspection.convention);
+  }
+
+  /** The marks of the phase being stepped, worked out once per snapshot: the legend and the view both need them. */
+  private phaseMarks(): HighlightSpec | null {
+    const snapshot = this.snapshot;
+    if (!snapshot?.stepping || !snapshot.phase) return null;
+    if (this.marked?.snapshot !== snapshot) this.marked = { snapshot, marks: phaseHighlight(snapshot.mesh, snapshot.phase) };
+    return this.marked.marks;
   }
 
   private drawSelection(): void {
     const mesh = this.mesh;
     if (!mesh) return;
     this.selectionLayer.show(mesh, this.inspection.highlight(mesh), this.scale);
-    const phase = this.snapshot?.phase;
-    if (phase && this.snapshot?.stepping) this.phaseLayer.show(mesh, phaseHighlight(mesh, phase), this.scale);
+    const marks = this.phaseMarks();
+    if (marks) this.phaseLayer.show(mesh, marks, this.scale);
     else this.phaseLayer.clear();
     this.idLayer.clear();
     if (this.showIds && mesh.nVertices + mesh.nFaces <= MAX_ID_LABELS) this.idLayer.show(mesh, idLabels(mesh), this.scale);

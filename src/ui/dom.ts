@@ -52,3 +52,8 @@ export function replaceKeepingFocus(parent: Element, ...children: Child[]): void
   replace(parent, ...children);
   if (name) parent.querySelector<HTMLElement>(`[aria-label="${CSS.escape(name)}"]`)?.focus();
 }
+
+/** The text with its first letter in capitals, to begin a sentence. */
+export function capitalized(text: string): string {
+  return text.charAt(0).toUpperCase() + text.slice(1);
+}

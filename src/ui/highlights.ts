@@ -133,11 +133,10 @@ export function phaseHighlight(mesh: HalfedgeMesh, phase: Phase): HighlightSpec 
 /** What the colours of a phase's marks mean, in the stepper's order: those `spec` uses. */
 export function phaseMeanings(spec: HighlightSpec): PhaseMeaning[] {
   const used = new Set([...spec.faces, ...spec.halfedges, ...spec.edges, ...spec.vertices].map((mark) => mark.color));
-  return phaseMeaningNames.filter((name) => used.has(phaseColors[name]));
+  return (Object.keys(phaseColors) as PhaseMeaning[]).filter((name) => used.has(phaseColors[name]));
 }
 
 export type PhaseMeaning = keyof typeof phaseColors;
-const phaseMeaningNames = ['created', 'moved', 'rewired'] as const satisfies readonly PhaseMeaning[];
 
 /** A quiz path: the start, each step, and the answer (right in green, a wrong pick in vermillion). */
 export function quizHighlight(mesh: HalfedgeMesh, path: Selection[], picked: Selection | null, right: boolean): HighlightSpec {

@@ -89,7 +89,6 @@ export class Opening {
       this.actions.opened(await this.actions.open(bytes, name, sample, options), name);
       return true;
     } catch (error) {
-      this.actions.hideProgress();
       this.menu.value = this.sample ?? ''; // the menu shows what stays open
       const { message } = error as Error;
       if (error instanceof CancelledError) this.actions.say(`${message}; the previous mesh stays.`);

@@ -5,7 +5,7 @@
  */
 import type { BuildReport, RepairIncident } from '../../core/index.js';
 import type { FileInfo } from '../../workers/protocol.js';
-import { el, replace } from '../dom.js';
+import { capitalized, el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
 
 /** What the File tab can do in the view: show a repair's incident, show or hide the seams. */
@@ -86,7 +86,7 @@ function weldControl({ notes, weldTolerance: tolerance }: FileInfo, reopen: File
   // the reader's own count ("welded 177 glTF vertices into 122 (55 joined …)"), else what was joined
   const note = notes.find((line) => line.startsWith('welded '));
   const said = note
-    ? `${note[0].toUpperCase()}${note.slice(1)}.`
+    ? `${capitalized(note)}.`
     : tolerance > 0
       ? `Vertices within ${tolerance} of each other were welded.`
       : 'Vertices at exactly equal positions were welded.';

@@ -227,8 +227,7 @@ export class Viewer {
     const canvas = this.renderer.domElement.getBoundingClientRect();
     const overlays = this.overlays().map((r) => ({ left: r.left - canvas.left, top: r.top - canvas.top, right: r.right - canvas.left, bottom: r.bottom - canvas.top }));
     const spot = clearSpot(width, height, overlays);
-    const whole = Math.min(width, height) / 2;
-    return { shift: { x: (spot.x - width / 2) / width, y: (spot.y - height / 2) / height }, scale: whole > 0 ? Math.max(spot.radius / whole, 0.1) : 1 };
+    return { shift: { x: (spot.x - width / 2) / width, y: (spot.y - height / 2) / height }, scale: spot.radius / (Math.min(width, height) / 2) };
   }
 
   /** Draws the point the camera orbits at the framed spot rather than in the middle (both cameras, for a switch of mode). */
