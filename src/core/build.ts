@@ -6,8 +6,8 @@
  * neighbouring face that runs along the same edge the other way. The phases:
  *
  *   1. keep the faces a halfedge mesh can hold (drop out-of-range and degenerate ones);
- *   2. pair the corners that share an edge (a counting sort by the edge's lower vertex, then a
- *      stamp per upper vertex: no search, no hash map, no sort by comparison);
+ *   2. pair the corners that share an edge (a counting sort by the edge's lower vertex, then the
+ *      few corners of each bucket compared with one another: no hash map, no search of the mesh);
  *   3. when some pair runs the same way, flip faces so neighbours agree (per component, keeping the
  *      majority's orientation); a pair that still disagrees is a non-orientable seam and is cut;
  *   4. edges with three or more faces keep one pair and detach the rest; a face cut or detached
@@ -304,8 +304,10 @@ interface Pairing {
 function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: Tick = () => {}): Pairing {
   const nF = starts.length - 1;
   const nC = starts[nF];
-  // bucket the corners by the lower vertex of their edge (counting sort)
-  const bucketStart = new Int32Array(nV + 1);
+  // bucket the corners by the lower vertex of their edge (a counting sort): count bucket v's
+  // corners at v + 2, sum them up so that v + 1 holds where bucket v starts, then let each corner
+  // placed in bucket v move v + 1 on; afterwards bucket v runs from bucketStart[v] to bucketStart[v + 1]
+  const bucketStart = new Int32Array(nV + 2);
   for (let f = 0; f < nF; f++) {
     if ((f & TICK) === 0) tick(f, 3 * nF);
     const s = starts[f];
@@ -313,13 +315,12 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: 
     for (let c = s; c < e; c++) {
       const a = corners[c];
       const b = corners[c + 1 < e ? c + 1 : s];
-      bucketStart[(a < b ? a : b) + 1]++;
+      bucketStart[(a < b ? a : b) + 2]++;
     }
   }
-  for (let v = 0; v < nV; v++) bucketStart[v + 1] += bucketStart[v];
+  for (let v = 1; v <= nV + 1; v++) bucketStart[v] += bucketStart[v - 1];
   // entries: (corner, upper vertex) pairs, side by side so one cache line holds both; the upper
   // vertex is stored as ~hi (negative) when the corner runs from hi to lo
-  const fill = bucketStart.slice(0, nV);
   const entries = new Int32Array(2 * nC);
   for (let f = 0; f < nF; f++) {
     if ((f & TICK) === 0) tick(nF + f, 3 * nF);
@@ -328,59 +329,76 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: 
     for (let c = s; c < e; c++) {
       const a = corners[c];
       const b = corners[c + 1 < e ? c + 1 : s];
-      const slot = 2 * fill[a < b ? a : b]++;
+      const slot = 2 * bucketStart[(a < b ? a : b) + 1]++;
       entries[slot] = c;
       entries[slot + 1] = a < b ? b : ~a;
     }
   }
 
-  // within a bucket, corners with the same upper vertex share an edge: stamp the upper vertex with
-  // the bucket it was last seen in, the first corner seen there (~c when it runs down) and its
-  // partner (or -1), side by side again, so the pairing reads nothing but the entries in order
+  // within a bucket, corners with the same upper vertex share an edge. A bucket holds a handful of
+  // corners (about six on a triangle mesh), so each one is compared with those after it, all in the
+  // cache; a big bucket (a vertex at the tip of a wide fan) is sorted first, so that the comparing
+  // can stop at the first other upper vertex
   const twin = new Int32Array(nC).fill(-1);
-  const stamps = new Int32Array(3 * nV).fill(-1);
   const crowded: number[][] = [];
-  const crowdedByFirst = new Map<number, number[]>();
   let sameDirectionPairs = 0;
   for (let lo = 0; lo < nV; lo++) {
     if ((lo & TICK) === 0) tick(2 * nV + lo, 3 * nV);
+    const begin = 2 * bucketStart[lo];
     const end = 2 * bucketStart[lo + 1];
-    for (let slot = 2 * bucketStart[lo]; slot < end; slot += 2) {
-      const c = entries[slot];
-      const upper = entries[slot + 1];
-      const down = upper < 0;
-      const hi = 3 * (down ? ~upper : upper);
-      if (stamps[hi] !== lo) {
-        stamps[hi] = lo;
-        stamps[hi + 1] = down ? ~c : c;
-        stamps[hi + 2] = -1;
-        continue;
+    const sorted = end - begin > 2 * SMALL_BUCKET;
+    if (sorted) sortByUpperVertex(entries, begin, end);
+    for (let i = begin; i < end; i += 2) {
+      const upper = entries[i + 1];
+      if (upper === PAIRED) continue;
+      const down = ~upper;
+      const first = entries[i];
+      let partner = -1;
+      let partnerUpper = 0;
+      let group: number[] | null = null;
+      for (let j = i + 2; j < end; j += 2) {
+        const other = entries[j + 1];
+        if (other !== upper && other !== down) {
+          if (sorted) break; // the corners on this edge all came just after i
+          continue;
+        }
+        entries[j + 1] = PAIRED;
+        if (partner === -1) {
+          partner = entries[j];
+          partnerUpper = other;
+        } else {
+          // a third (or later) corner on this edge: the edge is crowded, and no pair is made yet
+          group ??= [first, partner];
+          group.push(entries[j]);
+        }
       }
-      const stamped = stamps[hi + 1];
-      const first = stamped < 0 ? ~stamped : stamped;
-      const partner = stamps[hi + 2];
-      if (partner === -1) {
-        stamps[hi + 2] = c;
-        twin[first] = c;
-        twin[c] = first;
-        if (stamped < 0 === down) sameDirectionPairs++;
-        continue;
+      if (group !== null) crowded.push(group);
+      else if (partner !== -1) {
+        twin[first] = partner;
+        twin[partner] = first;
+        if (upper === partnerUpper) sameDirectionPairs++;
       }
-      // a third (or later) corner on this edge; -2 marks the first corner of a crowded edge
-      let group = crowdedByFirst.get(first);
-      if (!group) {
-        group = [first, partner];
-        crowdedByFirst.set(first, group);
-        crowded.push(group);
-        twin[first] = -2;
-        twin[partner] = -1;
-        if (corners[first] === corners[partner]) sameDirectionPairs--;
-      }
-      group.push(c);
     }
   }
-  for (const group of crowded) twin[group[0]] = -1;
   return { twin, sameDirectionPairs, crowded };
+}
+
+/** Buckets of up to this many corners are paired by comparing each corner with the ones after it. */
+const SMALL_BUCKET = 32;
+
+/** Marks an entry whose corner a corner before it in the bucket has taken (no upper vertex is ~0x7fffffff). */
+const PAIRED = -0x80000000;
+
+/**
+ * Sorts the (corner, upper vertex) entries between `begin` and `end` by upper vertex; corners on
+ * the same edge keep their order.
+ */
+function sortByUpperVertex(entries: Int32Array, begin: number, end: number): void {
+  const upperVertex = (slot: number) => (entries[slot + 1] < 0 ? ~entries[slot + 1] : entries[slot + 1]);
+  const slots = Array.from({ length: (end - begin) / 2 }, (_, k) => begin + 2 * k);
+  slots.sort((p, q) => upperVertex(p) - upperVertex(q) || p - q);
+  const sorted = slots.flatMap((slot) => [entries[slot], entries[slot + 1]]);
+  entries.set(sorted, begin);
 }
 
 /** Face of each corner. */

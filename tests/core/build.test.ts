@@ -40,6 +40,8 @@ const fixtures: Array<[string, () => PolygonSoup, Expected]> = [
   ['cube of quads', cube, { V: 8, E: 12, F: 6, loops: 0, components: 1, chi: 2, genus: 0 }],
   ['single triangle', singleTriangle, { V: 3, E: 3, F: 1, loops: 1, components: 1, chi: 1, genus: 0 }],
   ['open fan of 5 triangles', () => fan(5), { V: 7, E: 11, F: 5, loops: 1, components: 1, chi: 1, genus: 0 }],
+  // vertex 0 is the lower end of 200 corners' edges: more than the builder pairs by comparing each with the rest
+  ['open fan of 100 triangles', () => fan(100), { V: 102, E: 201, F: 100, loops: 1, components: 1, chi: 1, genus: 0 }],
   ['strip of 4 squares', () => strip(4), { V: 10, E: 17, F: 8, loops: 1, components: 1, chi: 1, genus: 0 }],
   ['annulus', () => annulus(12), { V: 24, E: 36, F: 12, loops: 2, components: 1, chi: 0, genus: 0 }],
   ['disk', () => disk(3), { V: 37, E: 90, F: 54, loops: 1, components: 1, chi: 1, genus: 0 }],
@@ -296,6 +298,17 @@ describe('buildMesh repairs and reports bad connectivity', () => {
     expect(() =>
       buildMesh({ positions: new Float64Array(9), faceStarts: new Uint32Array([0, 4]), faceIndices: new Uint32Array(3) }),
     ).toThrow(/faceStarts ends at 4/);
+  });
+
+  it('finds a third face on an edge among the many edges of one vertex', () => {
+    // fan(100) and one more triangle on the spoke 0–51: the spokes are paired in one big bucket
+    const { positions, faceIndices } = fan(100);
+    const faces = Array.from({ length: 100 }, (_, f) => Array.from(faceIndices.subarray(3 * f, 3 * f + 3)));
+    const { mesh, report } = buildMesh(soupFromArrays([...positions, 0, 0, 1], [...faces, [0, 51, 102]]));
+    expect(validate(mesh)).toEqual([]);
+    const incident = report.repairs.find((r) => r.kind === 'non-manifold-edge')!.incidents[0]!;
+    expect(incident.inputFaces).toEqual([49, 50, 100]);
+    expect(incident.message).toContain('49, 50 stay joined, 100 detached');
   });
 
   it('survives a vertex shared by thousands of faces in separate fans', () => {
