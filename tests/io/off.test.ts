@@ -251,6 +251,12 @@ describe('malformed OFF', () => {
     );
   });
 
+  it('names the vertex or face whose line holds more numbers than any OFF element can', () => {
+    const many = Array.from({ length: 200 }, () => '0').join(' ');
+    expect(parseError(() => read(`OFF\n3 1 0\n0 0 0\n${many}\n0 1 0\n3 0 1 2\n`)).message).toMatch(/^off: line 4, column \d+: vertex 1 has more than \d+ numbers$/);
+    expect(parseError(() => read(`OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 ${many}\n`)).message).toMatch(/^off: line 6, column \d+: face 0 has more than \d+ numbers$/);
+  });
+
   it('refuses two numbers after a face: no colour has two components', () => {
     const error = parseError(() => read(`OFF\n5 1 0\n${fivePoints}3 0 1 2 3 4\n`));
     expect(error.message).toMatch(/face 0 has 2 numbers after its vertex ids/);

@@ -189,7 +189,7 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
         scanner.nextLine();
         continue;
     }
-    scanner.endLine(`the '${keyword}' statement should end here`);
+    scanner.endLine(() => `the '${keyword}' statement should end here`);
   }
   vertexIds.check();
   texcoordIds.check();

@@ -353,11 +353,11 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
   const values = new Float64Array(maxValues);
   const integral = new Uint8Array(maxValues);
   const fail: Fail = (reason) => scanner.fail(reason);
-  /** Reads the numbers left on this line into `values`; returns how many. */
-  const readLine = (what: string): number => {
+  /** Reads the numbers left on the line of `element` `id` into `values`; returns how many. */
+  const readLine = (element: 'vertex' | 'face', id: number): number => {
     let count = 0;
     while (!scanner.atLineEnd()) {
-      if (count === maxValues) scanner.fail(`${what} has more than ${maxValues} numbers`);
+      if (count === maxValues) scanner.fail(`${element} ${id} has more than ${maxValues} numbers`);
       values[count] = scanner.number();
       integral[count++] = scanner.integral ? 1 : 0;
     }
@@ -387,7 +387,7 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
       }
       if ((v & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
       const line = scanner.line;
-      let count = readLine(`vertex ${v}`);
+      let count = readLine('vertex', v);
       for (; count < fewest; count++) {
         if (!readOnward(count)) scanner.fail(`the file ends inside vertex ${v}`);
       }
@@ -424,8 +424,8 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
       faceStarts[f + 1] = n;
       if (scanner.line !== line) firstSpan ??= `face ${f} went on from line ${line} onto line ${scanner.line}`;
       // the colour runs from the last index to the end of its line (Geomview's rule)
-      mesh.setFaceColor(f, values, integral, readLine(`face ${f}`), fail);
-      scanner.endLine(`face ${f} should end here`);
+      mesh.setFaceColor(f, values, integral, readLine('face', f), fail);
+      scanner.endLine(() => `face ${f} should end here`);
     }
   } catch (error) {
     if (!(error instanceof ParseError) || firstSpan === undefined) throw error;

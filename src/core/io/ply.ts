@@ -562,8 +562,7 @@ function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progres
         list.items.length = n;
         list.starts[row + 1] = n;
       }
-      const declared = plural(properties.length, 'property', 'properties');
-      scanner.endLine(`row ${row} of element '${name}' should end after its ${declared}`);
+      scanner.endLine(() => `row ${row} of element '${name}' should end after its ${plural(properties.length, 'property', 'properties')}`);
     }
   }
   if (scanner.skipBlankLines()) plan.notes.push(`ignored the text after the last element (from line ${scanner.line})`);

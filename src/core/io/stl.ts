@@ -136,7 +136,7 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
       if (scanner.atLineEnd()) scanner.fail(`${what} needs 3 numbers`);
       target.push(scanner.number());
     }
-    scanner.endLine(`${what} should end after 3 numbers`);
+    scanner.endLine(() => `${what} should end after 3 numbers`);
   };
 
   expect('solid');

@@ -124,8 +124,8 @@ export class TextScanner {
    * Ends a line of data: only spaces or a comment may remain on it.
    * @throws ParseError naming `what` when more values follow.
    */
-  endLine(what: string): void {
-    if (!this.atLineEnd()) this.fail(`${what}, then found '${this.token()}'`);
+  endLine(what: string | (() => string)): void {
+    if (!this.atLineEnd()) this.fail(`${typeof what === 'string' ? what : what()}, then found '${this.token()}'`);
     if (this.pos < this.bytes.length) this.newLineAt(this.pos);
   }
 
@@ -297,6 +297,9 @@ function excerpt(bytes: Uint8Array, start: number, end: number): string {
   return end - start > 24 ? `${visible}…` : visible;
 }
 
+/** ASCII runs up to this long are decoded character by character. */
+const SHORT_RUN = 32;
+
 /**
  * Decodes UTF-8 bytes (ASCII being the common case) into a string; a malformed sequence becomes
  * U+FFFD. Used for names, comments and error excerpts, and for glTF's JSON (ASCII runs go whole).
@@ -311,7 +314,12 @@ export function decodeText(bytes: Uint8Array, start = 0, end = bytes.length): st
       // a run of ASCII at once (most of any text), in pieces that fit an argument list
       let j = i + 1;
       while (j < end && j - i < 8192 && bytes[j] < 0x80) j++;
-      text += String.fromCharCode.apply(null, bytes.subarray(i, j) as unknown as number[]);
+      if (j - i <= SHORT_RUN) {
+        // a keyword or a short name, met once per line of OBJ: a view of the bytes would cost more
+        for (let k = i; k < j; k++) text += String.fromCharCode(bytes[k]);
+      } else {
+        text += String.fromCharCode.apply(null, bytes.subarray(i, j) as unknown as number[]);
+      }
       i = j;
       continue;
     }
