@@ -122,7 +122,8 @@ export class TextScanner {
 
   /**
    * Ends a line of data: only spaces or a comment may remain on it.
-   * @throws ParseError naming `what` when more values follow.
+   * @throws ParseError naming `what` when more values follow (a function builds a message that
+   *   names the row only then, not once per row).
    */
   endLine(what: string | (() => string)): void {
     if (!this.atLineEnd()) this.fail(`${typeof what === 'string' ? what : what()}, then found '${this.token()}'`);
@@ -315,7 +316,8 @@ export function decodeText(bytes: Uint8Array, start = 0, end = bytes.length): st
       let j = i + 1;
       while (j < end && j - i < 8192 && bytes[j] < 0x80) j++;
       if (j - i <= SHORT_RUN) {
-        // a keyword or a short name, met once per line of OBJ: a view of the bytes would cost more
+        // a keyword, a name, a number of 17 digits: met once per line or number, where a view of
+        // the bytes would cost more than the characters
         for (let k = i; k < j; k++) text += String.fromCharCode(bytes[k]);
       } else {
         text += String.fromCharCode.apply(null, bytes.subarray(i, j) as unknown as number[]);
