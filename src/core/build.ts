@@ -23,6 +23,7 @@
 import { attributeTypeOf } from './attributes.js';
 import { InvalidInputError } from './errors.js';
 import { HalfedgeMesh } from './mesh.js';
+import { setMeshArray } from './mesh-arrays.js';
 import { type BuildReport, ReportBuilder } from './report.js';
 import { checkSoupShape, type PolygonSoup } from './soup.js';
 
@@ -59,8 +60,10 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   const kept = keepValidFaces(soup, report);
   progress(0.2);
 
-  // 2. pair the corners that share an edge
-  let pairing = pairCorners(kept.corners, kept.starts, nInputVertices, span(0.2, 0.4));
+  // 2. pair the corners that share an edge, in memory that a closed mesh's next and prev pointers
+  // then take over (two numbers a corner either way): the build touches none it throws away
+  const entries = new Int32Array(2 * kept.starts[kept.faceCount]);
+  let pairing = pairCorners(kept.corners, kept.starts, nInputVertices, entries, span(0.2, 0.4));
   progress(0.4);
 
   // 3. orient: flip faces until every pair runs opposite ways, or cut where it cannot
@@ -68,7 +71,7 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   const detached: Detached[] = [];
   if (pairing.sameDirectionPairs > 0) {
     orientFaces(kept, pairing.twin, report);
-    pairing = pairCorners(kept.corners, kept.starts, nInputVertices);
+    pairing = pairCorners(kept.corners, kept.starts, nInputVertices, entries);
     cutSeams(kept, pairing.twin, report, detached);
   }
 
@@ -79,12 +82,12 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
     copyOf = detachCorners(kept, detached, nInputVertices, soup.faceIndices);
     // copies only ever take corners out of an edge, so every edge now has one or two corners,
     // and the two of a pair run opposite ways
-    pairing = pairCorners(kept.corners, kept.starts, nInputVertices + copyOf.length);
+    pairing = pairCorners(kept.corners, kept.starts, nInputVertices + copyOf.length, entries);
   }
   progress(0.5);
 
   // 5. number the halfedges and link each face loop (twin becomes each corner's halfedge)
-  const mesh = linkFaces(kept, pairing.twin, nInputVertices + copyOf.length, span(0.5, 0.7));
+  const mesh = linkFaces(kept, pairing.twin, nInputVertices + copyOf.length, entries, span(0.5, 0.7));
   copyAttributes(soup, kept, mesh, pairing.twin);
   copyOf.forEach((v, i) => mesh.vertexAttributes.copy(nInputVertices + i, v));
   progress(0.7);
@@ -301,7 +304,8 @@ interface Pairing {
   crowded: number[][];
 }
 
-function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: Tick = () => {}): Pairing {
+/** Pairs the corners; `entries` (two numbers a corner) is its working memory. */
+function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, entries: Int32Array, tick: Tick = () => {}): Pairing {
   const nF = starts.length - 1;
   const nC = starts[nF];
   // bucket the corners by the lower vertex of their edge (a counting sort): count bucket v's
@@ -321,7 +325,6 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, tick: 
   for (let v = 1; v <= nV + 1; v++) bucketStart[v] += bucketStart[v - 1];
   // entries: (corner, upper vertex) pairs, side by side so one cache line holds both; the upper
   // vertex is stored as ~hi (negative) when the corner runs from hi to lo
-  const entries = new Int32Array(2 * nC);
   for (let f = 0; f < nF; f++) {
     if ((f & TICK) === 0) tick(nF + f, 3 * nF);
     const s = starts[f];
@@ -577,7 +580,7 @@ function cornerEdge(kept: KeptFaces, c: number): [number, number] {
  * 0's halfedges are h0, h2, h4, … To spare a second array of corner size, `twin` is overwritten
  * as the pass goes: afterwards `twin[c]` is the halfedge of corner c.
  */
-function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number, tick: Tick = () => {}): HalfedgeMesh {
+function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number, entries: Int32Array, tick: Tick = () => {}): HalfedgeMesh {
   const { corners, starts, faceCount: nF } = kept;
   const nC = starts[nF];
   let unpaired = 0;
@@ -586,6 +589,12 @@ function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number, tick: Tick = (
   if (nE > 0x3fffffff) throw new InvalidInputError(`${nE} edges are more than one mesh can hold`);
 
   const mesh = new HalfedgeMesh({ vertices: nV, edges: nE, faces: nF });
+  if (unpaired === 0) {
+    // closed: a halfedge per corner, so the pairing's memory holds next and prev exactly (the
+    // arrays the mesh was made with are never touched, and cost no memory)
+    setMeshArray(mesh, 'heNext', entries.subarray(0, nC));
+    setMeshArray(mesh, 'hePrev', entries.subarray(nC));
+  }
   mesh.vertexSlots = nV;
   mesh.edgeSlots = nE;
   mesh.faceSlots = nF;
