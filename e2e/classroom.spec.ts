@@ -2,7 +2,7 @@ import { expect, type Page, test } from '@playwright/test';
 import { preview } from 'vite';
 import { cube, writeSoup } from '../src/index.js';
 import { colors } from '../src/ui/colors.js';
-import { canvasPixel, clickCanvas, colourDistance, hexToRgb, onCanvas, openApp } from './helpers.js';
+import { canvasPixel, clickCanvas, colourDistance, hexToRgb, onCanvas, openApp, verticesUnderOverlays } from './helpers.js';
 
 /** Whether halfedge `name` is drawn in the selection colour where it lies on screen. */
 async function drawnSelected(page: Page, name: string): Promise<boolean> {
@@ -227,19 +227,7 @@ test.describe('the classroom', () => {
       expect(await smallTexts()).toEqual([]);
       // framed again, the mesh goes where the overlays leave room: none of its vertices is under one
       await page.keyboard.press('Home');
-      const covered = await page.evaluate((overlays) => {
-        const canvas = document.querySelector('#viewport canvas')!.getBoundingClientRect();
-        const { vertices } = window.halfedgeLab.state().stats!;
-        const under: string[] = [];
-        for (let v = 0; v < vertices; v++) {
-          const at = window.halfedgeLab.screenPosition(`v${v}`);
-          const x = canvas.left + at.x;
-          const y = canvas.top + at.y;
-          if (overlays.some((box) => x >= box.left && x <= box.right && y >= box.top && y <= box.bottom)) under.push(`v${v}`);
-        }
-        return under;
-      }, boxes);
-      expect(covered).toEqual([]);
+      expect(await verticesUnderOverlays(page, ['legend', 'values-legend', 'status', 'hud'])).toEqual([]);
       await page.screenshot({ path: testInfo.outputPath('presentation-smoothing.png') });
       await page.keyboard.press('x');
       await expect(page.locator('#values-legend')).toBeHidden();
@@ -256,6 +244,40 @@ test.describe('the classroom', () => {
       await page.keyboard.press('Escape');
     });
   }
+
+  test('a phase card that comes over the mesh moves it aside, unless the lecturer has placed the view', async ({ page }, testInfo) => {
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await openApp(page, 'bunny.ply');
+    await page.keyboard.press('m');
+    await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', 'true');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    // a click that picks is not a move of the view
+    await clickCanvas(page, 400, 380);
+    const overlays = ['legend', 'values-legend', 'status', 'hud'];
+    await page.evaluate(async () => {
+      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
+      await window.halfedgeLab.step();
+    });
+    await expect(page.locator('#legend')).toContainText('phase 1 of 4');
+    expect(await verticesUnderOverlays(page, overlays)).toEqual([]);
+    await page.screenshot({ path: testInfo.outputPath('phase-card-clear.png') });
+
+    // turned by hand, the view stays where the lecturer put it, card or not
+    await page.keyboard.press('x');
+    const canvas = (await page.locator('#viewport canvas').boundingBox())!;
+    await page.mouse.move(canvas.x + 500, canvas.y + 400);
+    await page.mouse.down();
+    await page.mouse.move(canvas.x + 560, canvas.y + 380, { steps: 5 });
+    await page.mouse.up();
+    const camera = async () => new URL(await page.evaluate(() => window.halfedgeLab.shareLink())).searchParams.get('camera');
+    const placed = await camera();
+    await page.evaluate(async () => {
+      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
+      await window.halfedgeLab.step();
+    });
+    await expect(page.locator('#legend')).toContainText('phase 1 of 4');
+    expect(await camera()).toBe(placed);
+  });
 
   test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
     await openApp(page, 'torus.off');

@@ -85,3 +85,23 @@ export function hexToRgb(hex: string): [number, number, number] {
 export function colourDistance(a: [number, number, number], b: [number, number, number]): number {
   return Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 }
+
+/** The vertices of the mesh drawn under one of the overlays named (ids of the panels over the view). */
+export async function verticesUnderOverlays(page: Page, overlayIds: string[]): Promise<string[]> {
+  return page.evaluate((ids) => {
+    const canvas = document.querySelector('#viewport canvas')!.getBoundingClientRect();
+    const boxes = ids
+      .map((id) => document.getElementById(id)!)
+      .filter((overlay) => overlay.checkVisibility())
+      .map((overlay) => overlay.getBoundingClientRect());
+    const { vertices } = window.halfedgeLab.state().stats!;
+    const under: string[] = [];
+    for (let v = 0; v < vertices; v++) {
+      const at = window.halfedgeLab.screenPosition(`v${v}`);
+      const x = canvas.left + at.x;
+      const y = canvas.top + at.y;
+      if (boxes.some((box) => x >= box.left && x <= box.right && y >= box.top && y <= box.bottom)) under.push(`v${v}`);
+    }
+    return under;
+  }, overlayIds);
+}

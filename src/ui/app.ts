@@ -99,6 +99,8 @@ export class App {
   readonly quiz: QuizPanel;
   /** The Practice tab, loaded with its editor and grader when first asked for (see `practice()`). */
   private practicePanel: Promise<PracticePanel> | null = null;
+  /** Whether the camera was last framed on the whole mesh (not on a selection): see `show`. */
+  private framedWhole = false;
   /** The phase marks last worked out, and the snapshot they are of (see `phaseMarks`). */
   private marked: { snapshot: Snapshot; marks: HighlightSpec } | null = null;
   private readonly gizmo: PlaneGizmo;
@@ -368,8 +370,10 @@ export class App {
     else if (this.inspection.marks.quiz) this.quiz.end();
     this.drawSelection();
     this.drawPanels();
-    // framed last: the overlays it keeps the mesh clear of now show this mesh's counts
-    if (frame) this.frameMesh();
+    // framed last: the overlays it keeps the mesh clear of now show this mesh's counts. A view
+    // the app framed and nobody has moved since is framed again when an overlay has come over the
+    // mesh (a phase card while stepping); one the user placed, or a selection framed, stays
+    if (frame || (this.framedWhole && this.viewer.overlaysCoverFramed())) this.frameMesh();
     this.markReady();
     if (snapshot.pending) void this.completeDetails(snapshot);
   }
@@ -392,6 +396,7 @@ export class App {
     if (!this.mesh) return;
     const { box, radius } = meshBounds(this.mesh);
     this.viewer.frame(box, this.viewNormal(), radius);
+    this.framedWhole = true;
   }
 
   /**
@@ -411,6 +416,7 @@ export class App {
     const facing = selectionFacing(mesh, s);
     const direction = this.viewer.camera.position.clone().sub(this.viewer.controls.target);
     this.viewer.frame(box, this.viewNormal(), radius, facing && facing.dot(direction) < 0 ? facing : undefined);
+    this.framedWhole = false;
   }
 
   /** The direction the top view looks along: the plane of a 2D mesh, else z. */

@@ -61,6 +61,11 @@ export function clearSpot(width: number, height: number, overlays: readonly Rect
   return best && best.radius >= Math.max(SMALLEST * whole.radius, SMALLEST_PIXELS) ? best : whole;
 }
 
+/** Whether the rectangle covers part of the circle (more than touching its edge). */
+export function circleMeetsRect(circle: Spot, r: Rect): boolean {
+  return distanceToRect(circle.x, circle.y, r) < circle.radius - 0.5;
+}
+
 /** How far (x, y) is from the rectangle: 0 inside it. */
 function distanceToRect(x: number, y: number, r: Rect): number {
   const dx = Math.max(r.left - x, 0, x - r.right);

@@ -19,7 +19,7 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
-import { clearSpot } from './clear-spot.js';
+import { circleMeetsRect, clearSpot, type Rect, type Spot } from './clear-spot.js';
 import { placeLabels } from './label-placement.js';
 import { colors } from '../colors.js';
 
@@ -44,6 +44,12 @@ export class Viewer {
   private needsRender = true;
   /** Where the framed mesh sits, from the middle of the view, as a share of its width and height (see `frame`). */
   private shift = { x: 0, y: 0 };
+  /**
+   * The circle the last `frame` filled clear of the overlays (canvas pixels), until the user
+   * turns, moves or zooms the view, or a link places the camera; null too when no circle was
+   * clear (the mesh then took the whole view).
+   */
+  private framed: Spot | null = null;
   private disposed = false;
   private readonly resizeObserver = new ResizeObserver(() => this.resize());
   private readonly light = new DirectionalLight(0xffffff, 1.6);
@@ -62,7 +68,14 @@ export class Viewer {
     this.scene.add(new AmbientLight(0xffffff, 1.1), this.light);
     this.controls = new OrbitControls(this.perspective, this.renderer.domElement);
     this.controls.enableDamping = false;
-    this.controls.addEventListener('change', () => this.requestRender());
+    // a camera that moves during a gesture (not a click that picks) is where the user put it
+    let gesture = false;
+    this.controls.addEventListener('start', () => (gesture = true));
+    this.controls.addEventListener('end', () => (gesture = false));
+    this.controls.addEventListener('change', () => {
+      if (gesture) this.framed = null;
+      this.requestRender();
+    });
     this.resizeObserver.observe(container);
     this.resize();
     const loop = () => {
@@ -115,6 +128,7 @@ export class Viewer {
     // the box's half-diagonal bounds the points, but a sphere around the points is often tighter;
     // it goes where the overlays leave room, as large as that room (see clear-spot.ts)
     const spot = this.clearSpot();
+    this.framed = spot.overlays.some((r) => circleMeetsRect(spot.pixels, r)) ? null : spot.pixels;
     const radius = Math.max(sphereRadius ?? box.getSize(new Vector3()).length() / 2, 1e-6) / spot.scale;
     this.shift = spot.shift;
     this.applyShift();
@@ -164,8 +178,23 @@ export class Viewer {
     return { x: (0.5 + this.shift.x) * width, y: (0.5 + this.shift.y) * height };
   }
 
+  /**
+   * Whether framing again would help: an overlay now covers part of the circle the view was framed
+   * into clear of them all (a phase card that appeared over the mesh), and the overlays still
+   * leave a clear spot. False once the user has moved the view: where they put it stays.
+   */
+  overlaysCoverFramed(): boolean {
+    const framed = this.framed;
+    if (framed === null) return false;
+    const overlays = this.canvasOverlays();
+    if (!overlays.some((r) => circleMeetsRect(framed, r))) return false;
+    const { pixels } = this.clearSpot();
+    return !overlays.some((r) => circleMeetsRect(pixels, r));
+  }
+
   /** Puts the camera where a shared link says. */
   setCamera(position: number[], target: number[], zoom: number, [x, y]: [number, number] = [0, 0]): void {
+    this.framed = null;
     this.shift = { x, y };
     this.applyShift();
     const camera = this.camera;
@@ -222,12 +251,22 @@ export class Viewer {
    * Where the overlays leave the most room: that spot's centre relative to the middle (a share of
    * the width and height) and its size relative to the whole view's.
    */
-  private clearSpot(): { shift: { x: number; y: number }; scale: number } {
+  private clearSpot(): { shift: { x: number; y: number }; scale: number; pixels: Spot; overlays: Rect[] } {
     const { width, height } = this.size();
-    const canvas = this.renderer.domElement.getBoundingClientRect();
-    const overlays = this.overlays().map((r) => ({ left: r.left - canvas.left, top: r.top - canvas.top, right: r.right - canvas.left, bottom: r.bottom - canvas.top }));
+    const overlays = this.canvasOverlays();
     const spot = clearSpot(width, height, overlays);
-    return { shift: { x: (spot.x - width / 2) / width, y: (spot.y - height / 2) / height }, scale: spot.radius / (Math.min(width, height) / 2) };
+    return {
+      shift: { x: (spot.x - width / 2) / width, y: (spot.y - height / 2) / height },
+      scale: spot.radius / (Math.min(width, height) / 2),
+      pixels: spot,
+      overlays,
+    };
+  }
+
+  /** The overlays, in the canvas's pixels. */
+  private canvasOverlays(): Rect[] {
+    const canvas = this.renderer.domElement.getBoundingClientRect();
+    return this.overlays().map((r) => ({ left: r.left - canvas.left, top: r.top - canvas.top, right: r.right - canvas.left, bottom: r.bottom - canvas.top }));
   }
 
   /** Draws the point the camera orbits at the framed spot rather than in the middle (both cameras, for a switch of mode). */
