@@ -279,6 +279,21 @@ test.describe('the classroom', () => {
     expect(await camera()).toBe(placed);
   });
 
+  test('at 1024 × 768 in presentation mode, the status line and the note about the arrows sit side by side', async ({ page }) => {
+    await page.setViewportSize({ width: 1024, height: 768 });
+    await openApp(page, 'bunny.ply');
+    await page.keyboard.press('m');
+    await page.evaluate(async () => {
+      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
+      await window.halfedgeLab.step();
+    });
+    // four times the faces: at this zoom the edges are too short for arrows, and the note says so
+    await expect(page.locator('#arrow-note')).toBeVisible();
+    const status = (await page.locator('#status').boundingBox())!;
+    const note = (await page.locator('#arrow-note').boundingBox())!;
+    expect(status.x + status.width).toBeLessThan(note.x);
+  });
+
   test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
     await openApp(page, 'torus.off');
     await page.evaluate(() => window.halfedgeLab.select('h42'));
