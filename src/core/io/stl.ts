@@ -131,12 +131,13 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
       scanner.fail(`expected '${expected}', found '${scanner.token(at)}'`, at);
     }
   };
-  const readPoint = (target: GrowableArray<Float32Array<ArrayBuffer>>, what: string): void => {
+  /** Reads three numbers; `what` names them in an error (a function: built only when one comes). */
+  const readPoint = (target: GrowableArray<Float32Array<ArrayBuffer>>, what: () => string): void => {
     for (let k = 0; k < 3; k++) {
-      if (scanner.atLineEnd()) scanner.fail(`${what} needs 3 numbers`);
+      if (scanner.atLineEnd()) scanner.fail(`${what()} needs 3 numbers`);
       target.push(scanner.number());
     }
-    scanner.endLine(() => `${what} should end after 3 numbers`);
+    scanner.endLine(() => `${what()} should end after 3 numbers`);
   };
 
   expect('solid');
@@ -158,7 +159,7 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
     const facet = faceStarts.length - 1;
     if ((facet & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
     expect('normal');
-    readPoint(normals, `the normal of facet ${facet}`);
+    readPoint(normals, () => `the normal of facet ${facet}`);
     expect('outer');
     expect('loop');
     let cornerCount = 0;
@@ -171,7 +172,7 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
       if (word !== 'vertex') {
         scanner.fail(`expected 'vertex' or 'endloop' in facet ${facet}, found '${scanner.token(wordAt)}'`, wordAt);
       }
-      readPoint(corners, `vertex ${cornerCount} of facet ${facet}`);
+      readPoint(corners, () => `vertex ${cornerCount} of facet ${facet}`);
       cornerCount++;
     }
     if (cornerCount === 0) scanner.fail(`facet ${facet} has no vertices`);
