@@ -60,8 +60,8 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   const kept = keepValidFaces(soup, report);
   progress(0.2);
 
-  // 2. pair the corners that share an edge, in memory that a closed mesh's next and prev pointers
-  // then take over (two numbers a corner either way): the build touches none it throws away
+  // 2. pair the corners that share an edge. The pairing works in two numbers a corner, as many as
+  // a closed mesh's next and prev pointers, which then take that memory over (see `linkFaces`)
   const entries = new Int32Array(2 * kept.starts[kept.faceCount]);
   let pairing = pairCorners(kept.corners, kept.starts, nInputVertices, entries, span(0.2, 0.4));
   progress(0.4);
