@@ -279,6 +279,17 @@ test.describe('the classroom', () => {
     expect(await camera()).toBe(placed);
   });
 
+  test('at 1280 × 720 without presentation mode too, the first phase card leaves the whole mesh in sight', async ({ page }) => {
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await openApp(page, 'bunny.ply');
+    await page.evaluate(async () => {
+      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
+      await window.halfedgeLab.step();
+    });
+    await expect(page.locator('#legend')).toContainText('phase 1 of 4');
+    expect(await verticesUnderOverlays(page, ['legend', 'values-legend', 'status', 'hud'])).toEqual([]);
+  });
+
   test('at 1024 × 768 in presentation mode, the status line and the note about the arrows sit side by side', async ({ page }) => {
     await page.setViewportSize({ width: 1024, height: 768 });
     await openApp(page, 'bunny.ply');

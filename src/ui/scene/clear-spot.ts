@@ -31,10 +31,11 @@ const STEPS = 24;
 /**
  * A clear spot smaller than this share of the whole view's circle, or than this many pixels
  * across its radius, shows the mesh too small to read (in a small embed, say): the mesh keeps the
- * middle and the whole view, overlays or not.
+ * middle and the whole view, overlays or not. Beside a phase card at 1280 × 720 the clear spot is
+ * about 130 px across its radius, and a mesh that size still reads.
  */
 const SMALLEST = 0.5;
-const SMALLEST_PIXELS = 150;
+const SMALLEST_PIXELS = 120;
 
 /**
  * The largest circle in a `width` × `height` view that meets none of `overlays` (in the view's
