@@ -4,6 +4,14 @@ import { cube, writeSoup } from '../src/index.js';
 import { colors } from '../src/ui/colors.js';
 import { canvasPixel, clickCanvas, colourDistance, hexToRgb, onCanvas, openApp, verticesUnderOverlays } from './helpers.js';
 
+/** Starts a stepped Loop subdivision and shows its first phase. */
+async function firstLoopPhase(page: Page): Promise<void> {
+  await page.evaluate(async () => {
+    await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
+    await window.halfedgeLab.step();
+  });
+}
+
 /** Whether halfedge `name` is drawn in the selection colour where it lies on screen. */
 async function drawnSelected(page: Page, name: string): Promise<boolean> {
   await page.evaluate(() => new Promise(requestAnimationFrame));
@@ -254,10 +262,7 @@ test.describe('the classroom', () => {
     // a click that picks is not a move of the view
     await clickCanvas(page, 400, 380);
     const overlays = ['legend', 'values-legend', 'status', 'hud'];
-    await page.evaluate(async () => {
-      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
-      await window.halfedgeLab.step();
-    });
+    await firstLoopPhase(page);
     await expect(page.locator('#legend')).toContainText('phase 1 of 4');
     expect(await verticesUnderOverlays(page, overlays)).toEqual([]);
     await page.screenshot({ path: testInfo.outputPath('phase-card-clear.png') });
@@ -271,10 +276,7 @@ test.describe('the classroom', () => {
     await page.mouse.up();
     const camera = async () => new URL(await page.evaluate(() => window.halfedgeLab.shareLink())).searchParams.get('camera');
     const placed = await camera();
-    await page.evaluate(async () => {
-      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
-      await window.halfedgeLab.step();
-    });
+    await firstLoopPhase(page);
     await expect(page.locator('#legend')).toContainText('phase 1 of 4');
     expect(await camera()).toBe(placed);
   });
@@ -282,10 +284,7 @@ test.describe('the classroom', () => {
   test('at 1280 × 720 without presentation mode too, the first phase card leaves the whole mesh in sight', async ({ page }) => {
     await page.setViewportSize({ width: 1280, height: 720 });
     await openApp(page, 'bunny.ply');
-    await page.evaluate(async () => {
-      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
-      await window.halfedgeLab.step();
-    });
+    await firstLoopPhase(page);
     await expect(page.locator('#legend')).toContainText('phase 1 of 4');
     expect(await verticesUnderOverlays(page, ['legend', 'values-legend', 'status', 'hud'])).toEqual([]);
   });
@@ -294,10 +293,7 @@ test.describe('the classroom', () => {
     await page.setViewportSize({ width: 1024, height: 768 });
     await openApp(page, 'bunny.ply');
     await page.keyboard.press('m');
-    await page.evaluate(async () => {
-      await window.halfedgeLab.start({ kind: 'subdivide', scheme: 'loop' });
-      await window.halfedgeLab.step();
-    });
+    await firstLoopPhase(page);
     // four times the faces: at this zoom the edges are too short for arrows, and the note says so
     await expect(page.locator('#arrow-note')).toBeVisible();
     const status = (await page.locator('#status').boundingBox())!;

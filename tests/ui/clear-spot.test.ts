@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { circleMeetsRect, clearSpot } from '../../src/ui/scene/clear-spot.js';
+import { clearSpot, covered } from '../../src/ui/scene/clear-spot.js';
 
 describe('the clear spot of a view', () => {
   it('is the middle of a view with no overlays, as large as the view allows', () => {
@@ -30,12 +30,12 @@ describe('the clear spot of a view', () => {
 
   it('knows when an overlay covers part of a circle, and when it only touches or misses it', () => {
     const circle = { x: 400, y: 300, radius: 100 };
-    expect(circleMeetsRect(circle, { left: 450, top: 250, right: 600, bottom: 280 })).toBe(true);
+    expect(covered(circle, [{ left: 450, top: 250, right: 600, bottom: 280 }])).toBe(true);
     // beside the circle's edge, and off its bounding square's corner
-    expect(circleMeetsRect(circle, { left: 500, top: 0, right: 600, bottom: 600 })).toBe(false);
-    expect(circleMeetsRect(circle, { left: 480, top: 0, right: 600, bottom: 220 })).toBe(false);
+    expect(covered(circle, [{ left: 500, top: 0, right: 600, bottom: 600 }])).toBe(false);
+    expect(covered(circle, [{ left: 480, top: 0, right: 600, bottom: 220 }])).toBe(false);
     // the spot found for an overlay meets none of it
     const card = { left: 0, top: 0, right: 390, bottom: 350 };
-    expect(circleMeetsRect(clearSpot(820, 560, [card]), card)).toBe(false);
+    expect(covered(clearSpot(820, 560, [card]), [card])).toBe(false);
   });
 });

@@ -10,6 +10,7 @@ import {
   flipEdge,
   meshStats,
   ParseError,
+  type PolygonSoup,
   seededRandom,
   serializeMesh,
   soupFromArrays,
@@ -44,6 +45,15 @@ async function sessionWith(bytes: Uint8Array, name: string): Promise<PageSession
 }
 
 const cubeFile = () => writeSoup(cube(), 'off');
+
+/** A session on `shape` and a page copy that has taken its first snapshot. */
+async function sessionAndPage(shape: PolygonSoup): Promise<{ session: EditingSession; page: PageCopy }> {
+  const session = new EditingSession();
+  session.adopt(await loadFile(writeSoup(shape, 'off'), 'model.off'));
+  const page = new PageCopy();
+  page.take(session.snapshot());
+  return { session, page };
+}
 
 describe('EditingSession', () => {
   it('opens a file into the first history entry and snapshots it', async () => {
@@ -209,10 +219,7 @@ describe('a patched snapshot', () => {
     ['an annulus', () => annulus(24)],
     ['a sphere', () => uvSphere(16, 24)],
   ])('carries its change’s check and the exact boundary edges, the rest pending until details() (%s)', async (_, shape) => {
-    const session = new EditingSession();
-    session.adopt(await loadFile(writeSoup(shape(), 'off'), 'model.off'));
-    const page = new PageCopy();
-    page.take(session.snapshot());
+    const { session, page } = await sessionAndPage(shape());
     const random = seededRandom(20261126);
     let patched = 0;
     let version = 0;
@@ -243,10 +250,7 @@ describe('a patched snapshot', () => {
     ['a disk', () => disk(6)],
     ['a sphere', () => uvSphere(16, 24)],
   ])('after smoothing steps, details() measures the moved surface and agrees with a full pass, and after an edit too (%s)', async (_, shape) => {
-    const session = new EditingSession();
-    session.adopt(await loadFile(writeSoup(shape(), 'off'), 'model.off'));
-    const page = new PageCopy();
-    page.take(session.snapshot());
+    const { session, page } = await sessionAndPage(shape());
     page.take(session.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 2, boundary: 'smooth' } }));
     const areas: number[] = [];
     for (let i = 0; i < 2; i++) {

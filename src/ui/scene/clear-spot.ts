@@ -62,9 +62,9 @@ export function clearSpot(width: number, height: number, overlays: readonly Rect
   return best && best.radius >= Math.max(SMALLEST * whole.radius, SMALLEST_PIXELS) ? best : whole;
 }
 
-/** Whether the rectangle covers part of the circle (more than touching its edge). */
-export function circleMeetsRect(circle: Spot, r: Rect): boolean {
-  return distanceToRect(circle.x, circle.y, r) < circle.radius - 0.5;
+/** Whether one of the overlays covers part of the circle (more than touching its edge). */
+export function covered(circle: Spot, overlays: readonly Rect[]): boolean {
+  return overlays.some((r) => distanceToRect(circle.x, circle.y, r) < circle.radius - 0.5);
 }
 
 /** How far (x, y) is from the rectangle: 0 inside it. */

@@ -19,7 +19,7 @@ import {
 } from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import { CSS2DRenderer } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
-import { circleMeetsRect, clearSpot, type Rect, type Spot } from './clear-spot.js';
+import { clearSpot, covered, type Rect, type Spot } from './clear-spot.js';
 import { placeLabels } from './label-placement.js';
 import { colors } from '../colors.js';
 
@@ -128,7 +128,7 @@ export class Viewer {
     // the box's half-diagonal bounds the points, but a sphere around the points is often tighter;
     // it goes where the overlays leave room, as large as that room (see clear-spot.ts)
     const spot = this.clearSpot();
-    this.framed = spot.overlays.some((r) => circleMeetsRect(spot.pixels, r)) ? null : spot.pixels;
+    this.framed = covered(spot.pixels, spot.overlays) ? null : spot.pixels;
     const radius = Math.max(sphereRadius ?? box.getSize(new Vector3()).length() / 2, 1e-6) / spot.scale;
     this.shift = spot.shift;
     this.applyShift();
@@ -184,12 +184,9 @@ export class Viewer {
    * leave a clear spot. False once the user has moved the view: where they put it stays.
    */
   overlaysCoverFramed(): boolean {
-    const framed = this.framed;
-    if (framed === null) return false;
+    if (this.framed === null) return false;
     const overlays = this.canvasOverlays();
-    if (!overlays.some((r) => circleMeetsRect(framed, r))) return false;
-    const { pixels } = this.clearSpot();
-    return !overlays.some((r) => circleMeetsRect(pixels, r));
+    return covered(this.framed, overlays) && !covered(this.clearSpot(overlays).pixels, overlays);
   }
 
   /** Puts the camera where a shared link says. */
@@ -251,9 +248,8 @@ export class Viewer {
    * Where the overlays leave the most room: that spot's centre relative to the middle (a share of
    * the width and height) and its size relative to the whole view's.
    */
-  private clearSpot(): { shift: { x: number; y: number }; scale: number; pixels: Spot; overlays: Rect[] } {
+  private clearSpot(overlays = this.canvasOverlays()): { shift: { x: number; y: number }; scale: number; pixels: Spot; overlays: Rect[] } {
     const { width, height } = this.size();
-    const overlays = this.canvasOverlays();
     const spot = clearSpot(width, height, overlays);
     return {
       shift: { x: (spot.x - width / 2) / width, y: (spot.y - height / 2) / height },
