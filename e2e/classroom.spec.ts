@@ -299,6 +299,9 @@ test.describe('the classroom', () => {
     const status = (await page.locator('#status').boundingBox())!;
     const note = (await page.locator('#arrow-note').boundingBox())!;
     expect(status.x + status.width).toBeLessThan(note.x);
+    // the stepper's colour key wraps rather than running off the side panel
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    await expect(page.locator('.phase-legend').getByText('rewired')).toBeInViewport({ ratio: 1 });
   });
 
   test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
