@@ -133,6 +133,35 @@ describe('OFF variants', () => {
   });
 });
 
+describe('OFF text, read a batch of lines at a time', () => {
+  /** A strip of quads along x, with a triangle every third face, as the lines of an OFF file. */
+  const strip = (n: number) => ({
+    vertices: Array.from({ length: 2 * n }, (_, i) => `${i >> 1} ${i & 1} ${i / 8}`),
+    faces: Array.from({ length: n - 1 }, (_, i) => (i % 3 === 0 ? `3 ${2 * i} ${2 * i + 2} ${2 * i + 1}` : `4 ${2 * i} ${2 * i + 2} ${2 * i + 3} ${2 * i + 1}`)),
+  });
+  const off = ({ vertices, faces }: ReturnType<typeof strip>) => `OFF\n${vertices.length} ${faces.length} 0\n${[...vertices, ...faces].join('\n')}\n`;
+
+  it('names the line and column of a bad index thousands of lines in, as line by line', () => {
+    const lines = strip(3000);
+    lines.faces[2500] = '3 5000 5002 6000';
+    // 2 lines before the vertices, 6000 vertex lines, then face 2500; the 6000 after '3 5000 5002 '
+    expect(parseError(() => read(off(lines))).message).toBe(`off: line ${2 + 6000 + 2501}, column 13: face 2500: vertex index 6000 is out of range 0..5999`);
+  });
+
+  it('reads lines the fast lane leaves (comments, a vertex over two lines, long numbers, CRLF) as the rest', () => {
+    const lines = strip(2500);
+    const expected = read(off(lines)).soup;
+    lines.vertices[3] = '1.00000000000000000000 1 0.375 # vertex 3';
+    lines.vertices[2100] = `\t${lines.vertices[2100]}\r`;
+    lines.vertices[4000] = lines.vertices[4000].replace(' ', '\n');
+    lines.faces[1700] = `# a comment line\n${lines.faces[1700]}`;
+    const file = read(off(lines));
+    expect(Array.from(file.soup.positions)).toEqual(Array.from(expected.positions));
+    expect(faceLists(file.soup)).toEqual(faceLists(expected));
+    expect(file.notes).toEqual([]);
+  });
+});
+
 describe('OFF BINARY', () => {
   /** A binary OFF of a quad and a triangle over five points. */
   function binaryOff(littleEndian: boolean, faceColorCount: boolean, colors: number[][] = [[], []]): Uint8Array {

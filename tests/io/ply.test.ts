@@ -108,6 +108,57 @@ describe('PLY lists', () => {
   });
 });
 
+describe('PLY ascii rows, read a batch at a time', () => {
+  /** Vertex i of a strip of quads along x, and its faces: triangles, then quads. */
+  const stripVertices = (n: number): PlyElementSpec => ({
+    name: 'vertex',
+    props: xyz,
+    rows: Array.from({ length: 2 * n }, (_, i) => [i >> 1, i & 1, i / 8]),
+  });
+  const stripFaces = (n: number): Array<Array<number | number[]>> =>
+    Array.from({ length: n - 1 }, (_, i) => [i % 3 === 0 ? [2 * i, 2 * i + 2, 2 * i + 1] : [2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1]]);
+
+  it('names the line and column of a bad index thousands of rows in, as row by row', () => {
+    const faces = stripFaces(3000);
+    faces[2500] = [[5000, 5002, 6000]];
+    const error = parseError(() => read(makePly('ascii', [stripVertices(3000), { ...twoTriangles, rows: faces }])));
+    // 9 header lines, 6000 vertex rows, then face 2500; the 6000 after '3 5000 5002 '
+    expect(error.message).toBe(`ply: line ${9 + 6000 + 2501}, column 13: face 2500: vertex index 6000 is out of range 0..5999`);
+  });
+
+  it('reads rows the fast lane leaves (long numbers, blank lines, tabs, CRLF, no last line feed) as the rest', () => {
+    const vertices = stripVertices(2500);
+    const faces = stripFaces(2500);
+    const expected = read(makePly('ascii', [vertices, { ...twoTriangles, rows: faces }])).soup;
+    const lines = new TextDecoder().decode(makePly('ascii', [vertices, { ...twoTriangles, rows: faces }])).split('\n');
+    const body = 9; // the first data line
+    lines[body + 3] = '1.00000000000000000000 1 0.375'; // vertex 3, with more digits than the fast lane takes
+    lines[body + 2100] = `\t${lines[body + 2100]}\r`;
+    lines[body + 4000] = `\n\n${lines[body + 4000]}`;
+    lines[body + 5000 + 1700] = `${lines[body + 5000 + 1700]}  \r`;
+    const file = read(lines.join('\n').replace(/\n$/, ''));
+    expectSameSoup(file.soup, expected);
+    expect(file.soup.faceStarts.length - 1).toBe(2499);
+  });
+
+  it('reads a face element that also holds a scalar, row by row', () => {
+    const faces: PlyElementSpec = {
+      name: 'face',
+      props: [twoTriangles.props[0], { name: 'flags', type: 'uchar' }],
+      rows: [
+        [[0, 1, 2], 7],
+        [[0, 2, 3], 9],
+      ],
+    };
+    const file = read(makePly('ascii', [square, faces]));
+    expect(faceLists(file.soup)).toEqual([
+      [0, 1, 2],
+      [0, 2, 3],
+    ]);
+    expect(Array.from(file.soup.faceAttributes?.find((a) => a.name === 'flags')?.data ?? [])).toEqual([7, 9]);
+  });
+});
+
 describe('PLY elements and properties the reader does not use', () => {
   const edge: PlyElementSpec = {
     name: 'edge',

@@ -1,7 +1,8 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { formatFloat32, formatFloat64 } from '../../src/core/io/output.js';
-import { decodeText, encodeText, TextScanner } from '../../src/core/io/text.js';
+import { decodeText, encodeText, PlainLines, TextScanner } from '../../src/core/io/text.js';
+import { ParseError } from '../../src/index.js';
 import { parseError, text } from './helpers.js';
 
 const SEED = 20261121;
@@ -60,6 +61,84 @@ describe('the number scanner', () => {
     expect([scanner.number(), scanner.atLineEnd()]).toEqual([1, true]);
     expect(comments).toEqual(['one']);
     expect(parseError(() => numbersOf('1 #2')).message).toMatch(/found '#2'/);
+  });
+});
+
+/** What reading a text line by line finds: each line's number, numbers and which are whole; then the error, if any. */
+interface LinesRead {
+  lines: Array<{ line: number; values: number[]; integral: boolean[] }>;
+  error: string | null;
+}
+
+/** Reads every line token by token with `number()`: the oracle for the fast lane. */
+function readByTokens(scanner: TextScanner, into: LinesRead): void {
+  const line = scanner.line;
+  const values: number[] = [];
+  const integral: boolean[] = [];
+  while (!scanner.atLineEnd()) {
+    values.push(scanner.number());
+    integral.push(scanner.integral);
+  }
+  into.lines.push({ line, values, integral });
+  scanner.endLine('a line');
+}
+
+function readLines(source: string, fastLane: boolean): LinesRead {
+  const scanner = new TextScanner(text(source), 'test');
+  const batch = new PlainLines();
+  const read: LinesRead = { lines: [], error: null };
+  try {
+    while (scanner.skipBlankLines()) {
+      const lines = fastLane ? scanner.plainLines(batch, Infinity) : 0;
+      for (let r = 0, from = 0; r < lines; from = batch.ends[r++]) {
+        const numbers = Array.from(batch.values.subarray(from, batch.ends[r]));
+        const whole = Array.from(batch.integral.subarray(from, batch.ends[r]), (x) => x === 1);
+        read.lines.push({ line: batch.firstLine + r, values: numbers, integral: whole });
+      }
+      if (lines === 0) readByTokens(scanner, read);
+    }
+  } catch (error) {
+    if (!(error instanceof ParseError)) throw error;
+    read.error = error.message;
+  }
+  return read;
+}
+
+describe('the fast lane for lines of plain numbers', () => {
+  const token = fc.oneof(
+    { weight: 8, arbitrary: fc.integer({ min: -999999, max: 999999 }).map(String) },
+    { weight: 8, arbitrary: fc.tuple(fc.integer({ min: -99999999, max: 99999999 }), fc.integer({ min: -25, max: 25 })).map(([m, e]) => `${m}e${e}`) },
+    { weight: 8, arbitrary: fc.double({ noNaN: true, noDefaultInfinity: true, min: -1e6, max: 1e6 }).map((x) => x.toFixed(6)) },
+    { weight: 2, arbitrary: fc.double({ noNaN: true, noDefaultInfinity: true }).map(formatFloat64) },
+    { weight: 1, arbitrary: fc.constantFrom('+4', '.5', '5.', '-0', '007', '1e', '-', '.', 'abc', 'nan', '#', '1#', '1.5e400', '12345678901234567890') },
+  );
+  const space = fc.constantFrom(' ', '  ', '\t', ' \r', '\u0000');
+  const line = fc.array(fc.tuple(token, space), { maxLength: 70 }).map((parts) => parts.map(([t, s]) => t + s).join(''));
+  const source = fc.tuple(fc.array(line, { maxLength: 40 }), fc.boolean()).map(([lines, lastFeed]) => lines.join('\n') + (lastFeed ? '\n' : ''));
+
+  it(`reads what number() reads, line by line, and leaves every other line to it (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(source, (text) => {
+        expect(readLines(text, true)).toEqual(readLines(text, false));
+      }),
+      { seed: SEED, numRuns: 3000 },
+    );
+  });
+
+  it('keeps count of lines across batches, and moves back to a line it read', () => {
+    const source = Array.from({ length: 5000 }, (_, i) => `${i} ${i / 4}`).join('\n');
+    const scanner = new TextScanner(text(`${source}\n`), 'test', { line: 3 });
+    const batch = new PlainLines();
+    let rows = 0;
+    for (let lines; (lines = scanner.plainLines(batch, Infinity)) > 0; rows += lines) {
+      expect([batch.values[0], batch.firstLine]).toEqual([rows, 3 + rows]);
+    }
+    expect([rows, scanner.line, scanner.skipBlankLines()]).toEqual([5000, 5003, false]);
+
+    const again = new TextScanner(text(`${source}\n`), 'test', { line: 3 });
+    expect(again.plainLines(batch, 100)).toBe(100);
+    again.backTo(batch, 40);
+    expect([again.location(), again.number(), again.number()]).toEqual([{ line: 43, column: 1 }, 40, 10]);
   });
 });
 

@@ -37,7 +37,7 @@ export interface MeshFile {
 export type Progress = (fraction: number) => void;
 
 /**
- * Readers report progress every `PROGRESS_ROWS + 1` rows (a power of two, tested with a mask):
+ * Readers report progress every `PROGRESS_ROWS + 1` rows or so (a power of two, for a mask):
  * often enough for ten updates a second on the largest files, rarely enough to cost nothing.
  */
 export const PROGRESS_ROWS = 0x3fff;

@@ -34,7 +34,7 @@ import type { PolygonSoup, SoupAttribute } from '../soup.js';
 import { BinaryReader } from './binary.js';
 import { GrowableArray } from './growable.js';
 import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
-import { TextScanner } from './text.js';
+import { PlainLines, TextScanner } from './text.js';
 
 /** `[ST][C][N][4][n]OFF`, possibly with the counts glued on (`OFF8 6 0`). */
 const KEYWORD = /^(ST)?(C)?(N)?(4)?(n)?OFF/;
@@ -154,8 +154,6 @@ function skipAppearanceBlock(scanner: TextScanner, notes: string[]): void {
 // -------------------------------------------------------------------------------------------------
 // What vertex and face lines carry, for both encodings
 
-type Fail = (reason: string) => never;
-
 /** The arrays of an OFF mesh, filled vertex by vertex and face by face. */
 class OffMesh {
   readonly shape: OffShape;
@@ -183,24 +181,21 @@ class OffMesh {
   }
 
   /**
-   * Stores vertex `v` from the `count` numbers of its line: coordinates, then normal, colour and
-   * texture coordinates as the keyword says.
+   * Stores vertex `v` from the `count` numbers of its line, `values[at]` on: coordinates, then
+   * normal, colour and texture coordinates as the keyword says. A line that cannot be a vertex is
+   * not stored: what is wrong with it is returned instead (null when it was stored).
    */
-  setVertex(v: number, values: Float64Array, integral: Uint8Array, count: number, fail: Fail): void {
+  setVertex(v: number, values: Float64Array, integral: Uint8Array, at: number, count: number): string | null {
     const { shape, positions } = this;
     const coordinates = shape.dimension + (shape.homogeneous ? 1 : 0);
     if (count < coordinates) {
-      fail(`vertex ${v} has ${count} numbers, but ${shape.keyword} needs ${coordinates} coordinates`);
+      return `vertex ${v} has ${count} numbers, but ${shape.keyword} needs ${coordinates} coordinates`;
     }
-    const w = shape.homogeneous ? values[shape.dimension] : 1;
-    if (w === 0) fail(`vertex ${v} has w = 0: a point at infinity has no place in a mesh`);
-    // fewer than 3 coordinates: the rest are 0; more: x, y, z are kept (`finish` says so)
-    for (let k = 0; k < 3; k++) positions[3 * v + k] = k < shape.dimension ? values[k] / w : 0;
-
-    let at = coordinates;
+    const w = shape.homogeneous ? values[at + shape.dimension] : 1;
+    if (w === 0) return `vertex ${v} has w = 0: a point at infinity has no place in a mesh`;
     const normalCount = shape.normals ? 3 : 0;
     const texcoordCount = shape.texcoords ? 2 : 0;
-    const colorCount = count - at - normalCount - texcoordCount;
+    const colorCount = count - coordinates - normalCount - texcoordCount;
     if (shape.colors ? colorCount !== 3 && colorCount !== 4 : colorCount < 0) {
       const parts = [
         shape.normals && 'a normal (3)',
@@ -208,8 +203,11 @@ class OffMesh {
         shape.texcoords && 'texture coordinates (2)',
       ];
       const needs = parts.filter(Boolean).join(', ');
-      fail(`vertex ${v} has ${count - at} numbers after its coordinates, but ${shape.keyword} needs ${needs}`);
+      return `vertex ${v} has ${count - coordinates} numbers after its coordinates, but ${shape.keyword} needs ${needs}`;
     }
+    // fewer than 3 coordinates: the rest are 0; more: x, y, z are kept (`finish` says so)
+    for (let k = 0; k < 3; k++) positions[3 * v + k] = k < shape.dimension ? values[at + k] / w : 0;
+    at += coordinates;
     if (this.normals) {
       for (let k = 0; k < 3; k++) this.normals[3 * v + k] = values[at + k];
       at += 3;
@@ -223,15 +221,20 @@ class OffMesh {
     if (this.texcoords) {
       for (let k = 0; k < 2; k++) this.texcoords[2 * v + k] = values[at + k];
     }
+    return null;
   }
 
-  /** Stores the colour that follows face `f`'s vertex ids (0, 1, 3 or 4 numbers). */
-  setFaceColor(f: number, values: Float64Array, integral: Uint8Array, count: number, fail: Fail): void {
+  /**
+   * Stores the colour that follows face `f`'s vertex ids (0, 1, 3 or 4 numbers, `values[at]` on);
+   * returns what is wrong with any other count (null when it was stored).
+   */
+  setFaceColor(f: number, values: Float64Array, integral: Uint8Array, at: number, count: number): string | null {
     if (count === 1) this.colormapIndices++;
-    else if (count === 3 || count === 4) this.faceColors.set(f, values, integral, 0, count);
+    else if (count === 3 || count === 4) this.faceColors.set(f, values, integral, at, count);
     else if (count !== 0) {
-      fail(`face ${f} has ${count} numbers after its vertex ids; a colour is 1, 3 or 4 (is its corner count right?)`);
+      return `face ${f} has ${count} numbers after its vertex ids; a colour is 1, 3 or 4 (is its corner count right?)`;
     }
+    return null;
   }
 
   finish(notes: string[]): PolygonSoup {
@@ -352,7 +355,6 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
   const maxValues = maxValuesPerLine(shape);
   const values = new Float64Array(maxValues);
   const integral = new Uint8Array(maxValues);
-  const fail: Fail = (reason) => scanner.fail(reason);
   /** Reads the numbers left on the line of `element` `id` into `values`; returns how many. */
   const readLine = (element: 'vertex' | 'face', id: number): number => {
     let count = 0;
@@ -380,52 +382,80 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
    * element that did so is named in any error after it.
    */
   let firstSpan: string | undefined;
+  /** Reads vertex `v` token by token, from its first. */
+  const readVertex = (v: number): void => {
+    const line = scanner.line;
+    let count = readLine('vertex', v);
+    for (; count < fewest; count++) {
+      if (!readOnward(count)) scanner.fail(`the file ends inside vertex ${v}`);
+    }
+    if (scanner.line !== line) firstSpan ??= `vertex ${v} went on from line ${line} onto line ${scanner.line}`;
+    const problem = mesh.setVertex(v, values, integral, 0, count);
+    if (problem !== null) scanner.fail(problem);
+  };
+  const { faceStarts, faceIndices } = mesh;
+  /** Reads face `f` token by token, from its first. */
+  const readFace = (f: number): void => {
+    const at = scanner.pos;
+    const line = scanner.line;
+    const degree = scanner.integer();
+    if (degree < 1) {
+      scanner.fail(`face ${f} has ${degree} corners; a face needs at least one`, at);
+    }
+    if (degree > (bytes.length - scanner.pos + 1) / 2) {
+      scanner.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, at);
+    }
+    const indices = faceIndices.reserve(degree);
+    let n = faceIndices.length;
+    for (let k = 0; k < degree; k++) {
+      if (scanner.atLineEnd() && !scanner.skipBlankLines()) {
+        scanner.fail(`the file ends inside face ${f}, which announces ${degree} corners but lists ${k} vertex ids`);
+      }
+      const indexAt = scanner.pos;
+      const index = scanner.integer();
+      if (index < 0 || index >= vertexCount) scanner.fail(indexOutOfRange(f, index, vertexCount), indexAt);
+      indices[n++] = index;
+    }
+    faceIndices.length = n;
+    faceStarts[f + 1] = n;
+    if (scanner.line !== line) firstSpan ??= `face ${f} went on from line ${line} onto line ${scanner.line}`;
+    // the colour runs from the last index to the end of its line (Geomview's rule)
+    const problem = mesh.setFaceColor(f, values, integral, 0, readLine('face', f));
+    if (problem !== null) scanner.fail(problem);
+    scanner.endLine(`face ${f} should end here`);
+  };
+
+  // each element goes by the fast lane, a batch of plain lines at a time, for as long as its line
+  // holds it whole; the first other one is read token by token, which also says what is wrong with it
+  const batch = new PlainLines();
   try {
-    for (let v = 0; v < vertexCount; v++) {
+    for (let v = 0, reportAt = 0; v < vertexCount; ) {
       if (!scanner.skipBlankLines()) {
         scanner.fail(`the file ends after ${v} of ${plural(vertexCount, 'vertex', 'vertices')}`);
       }
-      if ((v & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
-      const line = scanner.line;
-      let count = readLine('vertex', v);
-      for (; count < fewest; count++) {
-        if (!readOnward(count)) scanner.fail(`the file ends inside vertex ${v}`);
+      if (v >= reportAt) {
+        progress(scanner.pos / bytes.length);
+        reportAt = v + PROGRESS_ROWS;
       }
-      if (scanner.line !== line) firstSpan ??= `vertex ${v} went on from line ${line} onto line ${scanner.line}`;
-      mesh.setVertex(v, values, integral, count, fail);
+      const lines = scanner.plainLines(batch, vertexCount - v);
+      const r = storeVertices(mesh, batch, lines, v, fewest, maxValues);
+      v += r;
+      if (r > 0 && r === lines) continue;
+      if (r < lines) scanner.backTo(batch, r);
+      readVertex(v++);
     }
-    progress(scanner.pos / bytes.length);
-
-    const { faceStarts, faceIndices } = mesh;
-    for (let f = 0; f < faceCount; f++) {
+    for (let f = 0, reportAt = 0; f < faceCount; ) {
       if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${f} of ${plural(faceCount, 'face')}`);
-      if ((f & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
-      const at = scanner.pos;
-      const line = scanner.line;
-      const degree = scanner.integer();
-      if (degree < 1) {
-        scanner.fail(`face ${f} has ${degree} corners; a face needs at least one`, at);
+      if (f >= reportAt) {
+        progress(scanner.pos / bytes.length);
+        reportAt = f + PROGRESS_ROWS;
       }
-      if (degree > (bytes.length - scanner.pos + 1) / 2) {
-        scanner.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, at);
-      }
-      const indices = faceIndices.reserve(degree);
-      let n = faceIndices.length;
-      for (let k = 0; k < degree; k++) {
-        if (scanner.atLineEnd() && !scanner.skipBlankLines()) {
-          scanner.fail(`the file ends inside face ${f}, which announces ${degree} corners but lists ${k} vertex ids`);
-        }
-        const indexAt = scanner.pos;
-        const index = scanner.integer();
-        if (index < 0 || index >= vertexCount) scanner.fail(indexOutOfRange(f, index, vertexCount), indexAt);
-        indices[n++] = index;
-      }
-      faceIndices.length = n;
-      faceStarts[f + 1] = n;
-      if (scanner.line !== line) firstSpan ??= `face ${f} went on from line ${line} onto line ${scanner.line}`;
-      // the colour runs from the last index to the end of its line (Geomview's rule)
-      mesh.setFaceColor(f, values, integral, readLine('face', f), fail);
-      scanner.endLine(() => `face ${f} should end here`);
+      const lines = scanner.plainLines(batch, faceCount - f);
+      const r = storeFaces(mesh, batch, lines, f, vertexCount);
+      f += r;
+      if (r > 0 && r === lines) continue;
+      if (r < lines) scanner.backTo(batch, r);
+      readFace(f++);
     }
   } catch (error) {
     if (!(error instanceof ParseError) || firstSpan === undefined) throw error;
@@ -438,6 +468,49 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
     soup: mesh.finish(notes),
     counts: { vertices: vertexCount, faces: faceCount },
   };
+}
+
+/**
+ * The fast lane's part for vertices: stores the lines of a batch (the first being vertex
+ * `firstVertex`) for as long as each line holds one whole vertex (`fewest` to `most` numbers that
+ * `setVertex` takes); returns how many it stored.
+ */
+function storeVertices(mesh: OffMesh, batch: PlainLines, lines: number, firstVertex: number, fewest: number, most: number): number {
+  const { values, integral, ends } = batch;
+  let r = 0;
+  for (let from = 0; r < lines; r++) {
+    const count = ends[r] - from;
+    if (count < fewest || count > most || mesh.setVertex(firstVertex + r, values, integral, from, count) !== null) break;
+    from = ends[r];
+  }
+  return r;
+}
+
+/**
+ * The fast lane's part for faces: stores the lines of a batch (the first being face `firstFace`)
+ * for as long as each line holds one whole face (a corner count, that many vertex ids in range,
+ * whole numbers all, then what `setFaceColor` takes); returns how many it stored.
+ */
+function storeFaces(mesh: OffMesh, batch: PlainLines, lines: number, firstFace: number, vertexCount: number): number {
+  const { values, integral, ends } = batch;
+  const { faceStarts, faceIndices } = mesh;
+  let r = 0;
+  for (let from = 0; r < lines; r++) {
+    const to = ends[r];
+    const degree = values[from];
+    if (!integral[from] || !(degree >= 1 && degree < to - from)) break;
+    const last = from + degree;
+    let k = from + 1;
+    while (k <= last && integral[k] && values[k] >= 0 && values[k] < vertexCount) k++;
+    if (k <= last || mesh.setFaceColor(firstFace + r, values, integral, last + 1, to - last - 1) !== null) break;
+    const indices = faceIndices.reserve(degree);
+    let n = faceIndices.length;
+    for (k = from + 1; k <= last; k++) indices[n++] = values[k];
+    faceIndices.length = n;
+    faceStarts[firstFace + r + 1] = n;
+    from = to;
+  }
+  return r;
 }
 
 function indexOutOfRange(f: number, index: number, vertexCount: number): string {
@@ -524,10 +597,10 @@ function readBinaryLayout(bytes: Uint8Array, start: number, keywordShape: OffSha
   const mesh = new OffMesh(shape, vertexCount, faceCount);
   const values = new Float64Array(maxValuesPerLine(shape));
   const integral = new Uint8Array(values.length);
-  const fail: Fail = (reason) => reader.fail(reason);
   for (let v = 0; v < vertexCount; v++) {
     for (let k = 0; k < floatsPerVertex; k++) values[k] = reader.float32();
-    mesh.setVertex(v, values, integral, floatsPerVertex, fail);
+    const problem = mesh.setVertex(v, values, integral, 0, floatsPerVertex);
+    if (problem !== null) reader.fail(problem);
   }
   const { faceStarts, faceIndices } = mesh;
   for (let f = 0; f < faceCount; f++) {
@@ -555,7 +628,8 @@ function readBinaryLayout(bytes: Uint8Array, start: number, keywordShape: OffSha
       reader.fail(`face ${f} announces ${colorCount} colour components (0 to 4 expected)`, colorAt);
     }
     for (let k = 0; k < colorCount; k++) values[k] = reader.float32();
-    mesh.setFaceColor(f, values, integral, colorCount, fail);
+    const problem = mesh.setFaceColor(f, values, integral, 0, colorCount);
+    if (problem !== null) reader.fail(problem);
   }
   return { mesh, vertexCount, faceCount, end: reader.offset };
 }

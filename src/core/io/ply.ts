@@ -41,7 +41,7 @@ import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes } from '.
 import { GrowableArray } from './growable.js';
 import { type Encoding, type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { quoted, someOf } from './names.js';
-import { TextScanner } from './text.js';
+import { PlainLines, TextScanner } from './text.js';
 
 /**
  * Every PLY type name, old (`uchar`) and new (`uint8`), and the type of the values it holds. A Map,
@@ -519,53 +519,116 @@ function planAttributes(
 
 function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progress: Progress): void {
   const scanner = new TextScanner(bytes, 'ply', { start: header.bodyStart, line: header.bodyLine });
+  const batch = new PlainLines();
   for (const { element, properties } of plan.elements) {
     const { name, count: rows } = element;
     if (properties.length === 0) continue;
-    for (let row = 0; row < rows; row++) {
+    for (let row = 0, reportAt = 0; row < rows; ) {
       if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${row} of ${rows} rows of element '${name}'`);
-      if ((row & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
-      for (let i = 0; i < properties.length; i++) {
-        const p = properties[i];
-        if (scanner.atLineEnd()) {
-          scanner.fail(`row ${row} of element '${name}' ends before its property '${p.property.name}'`);
-        }
-        if (p.property.countType === null) {
-          const value = scanner.number();
-          if (p.target) p.target[row * p.stride + p.offset] = value;
-          continue;
-        }
-        const countAt = scanner.pos;
-        const count = scanner.integer();
-        if (count < 0) scanner.fail(`row ${row} of element '${name}': a list cannot have ${count} items`, countAt);
-        if (count > (bytes.length - scanner.pos + 1) / 2) {
-          const reason = `the list announces ${count} items, more than the rest of the file holds`;
-          scanner.fail(`row ${row} of element '${name}': ${reason}`, countAt);
-        }
-        const list = p.list;
-        if (list === null) {
-          for (let k = 0; k < count; k++) {
-            if (scanner.atLineEnd()) scanner.fail(listEndsEarly(element, row, p, count, k));
-            scanner.number();
-          }
-          continue;
-        }
-        const items = list.items.reserve(count);
-        let n = list.items.length;
-        for (let k = 0; k < count; k++) {
-          if (scanner.atLineEnd()) scanner.fail(listEndsEarly(element, row, p, count, k));
-          const at = scanner.pos;
-          const value = list.holdsIndices ? scanner.integer() : scanner.number();
-          if (value < list.min || value > list.max) scanner.fail(outOfRange(element, row, value, list), at);
-          items[n++] = value;
-        }
-        list.items.length = n;
-        list.starts[row + 1] = n;
+      if (row >= reportAt) {
+        progress(scanner.pos / bytes.length);
+        reportAt = row + PROGRESS_ROWS;
       }
-      scanner.endLine(() => `row ${row} of element '${name}' should end after its ${plural(properties.length, 'property', 'properties')}`);
+      // the fast lane: rows of plain numbers, a batch at a time, each stored whole when it fits
+      // its properties; the first row that is not plain or does not fit is read token by token,
+      // which also says what is wrong with it
+      const lines = scanner.plainLines(batch, rows - row);
+      const r = storeRows(properties, batch, lines, row);
+      row += r;
+      if (r > 0 && r === lines) continue;
+      if (r < lines) scanner.backTo(batch, r);
+      readRowByTokens(scanner, element, properties, row++);
     }
   }
   if (scanner.skipBlankLines()) plan.notes.push(`ignored the text after the last element (from line ${scanner.line})`);
+}
+
+/**
+ * The fast lane's part: stores the rows of a batch (the first being row `firstRow`) for as long as
+ * each is what its properties say, as reading it token by token would find it; returns how many it
+ * stored. It takes the two layouts of nearly every file: rows of scalars alone (vertices), stored
+ * a column at a time, and rows of one list (faces: a count, then that many vertex indices, whole
+ * numbers in range). Rows of other layouts are left to `readRowByTokens`.
+ */
+function storeRows(properties: PropertyPlan[], batch: PlainLines, lines: number, firstRow: number): number {
+  const { values, integral, ends } = batch;
+  if (properties.every((p) => p.property.countType === null)) {
+    const width = properties.length;
+    let rows = 0;
+    while (rows < lines && ends[rows] === (rows + 1) * width) rows++;
+    for (let i = 0; i < width; i++) {
+      const { target, stride, offset } = properties[i];
+      if (target === null) continue;
+      for (let r = 0, at = firstRow * stride + offset; r < rows; r++, at += stride) target[at] = values[r * width + i];
+    }
+    return rows;
+  }
+  const list = properties.length === 1 ? properties[0].list : null;
+  if (list === null || lines === 0) return 0;
+  const { min, max, holdsIndices, starts } = list;
+  const items = list.items.reserve(ends[lines - 1] - lines); // each line: a count, then its items
+  let n = list.items.length;
+  let r = 0;
+  for (let from = 0; r < lines; r++) {
+    const to = ends[r];
+    if (!integral[from] || values[from] !== to - from - 1) break;
+    let k = from + 1;
+    for (; k < to; k++) {
+      const value = values[k];
+      if ((holdsIndices && !integral[k]) || value < min || value > max) break;
+      items[n + k - from - 1] = value;
+    }
+    if (k < to) break;
+    n += to - from - 1;
+    starts[firstRow + r + 1] = n;
+    from = to;
+  }
+  list.items.length = n;
+  return r;
+}
+
+/** Reads a row the fast lane did not take, property by property from its first token: stores it, or says what is wrong with it. */
+function readRowByTokens(scanner: TextScanner, element: PlyElement, properties: PropertyPlan[], row: number): void {
+  const { name } = element;
+  const bytes = scanner.bytes;
+  for (let i = 0; i < properties.length; i++) {
+    const p = properties[i];
+    if (scanner.atLineEnd()) {
+      scanner.fail(`row ${row} of element '${name}' ends before its property '${p.property.name}'`);
+    }
+    if (p.property.countType === null) {
+      const value = scanner.number();
+      if (p.target) p.target[row * p.stride + p.offset] = value;
+      continue;
+    }
+    const countAt = scanner.pos;
+    const count = scanner.integer();
+    if (count < 0) scanner.fail(`row ${row} of element '${name}': a list cannot have ${count} items`, countAt);
+    if (count > (bytes.length - scanner.pos + 1) / 2) {
+      const reason = `the list announces ${count} items, more than the rest of the file holds`;
+      scanner.fail(`row ${row} of element '${name}': ${reason}`, countAt);
+    }
+    const list = p.list;
+    if (list === null) {
+      for (let k = 0; k < count; k++) {
+        if (scanner.atLineEnd()) scanner.fail(listEndsEarly(element, row, p, count, k));
+        scanner.number();
+      }
+      continue;
+    }
+    const items = list.items.reserve(count);
+    let n = list.items.length;
+    for (let k = 0; k < count; k++) {
+      if (scanner.atLineEnd()) scanner.fail(listEndsEarly(element, row, p, count, k));
+      const at = scanner.pos;
+      const value = list.holdsIndices ? scanner.integer() : scanner.number();
+      if (value < list.min || value > list.max) scanner.fail(outOfRange(element, row, value, list), at);
+      items[n++] = value;
+    }
+    list.items.length = n;
+    list.starts[row + 1] = n;
+  }
+  scanner.endLine(`row ${row} of element '${name}' should end after its ${plural(properties.length, 'property', 'properties')}`);
 }
 
 function readBinaryBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progress: Progress): void {

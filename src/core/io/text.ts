@@ -52,6 +52,23 @@ export interface ScannerOptions {
 /** Comments kept per file; a file with a comment on every line would otherwise keep millions. */
 const MAX_COMMENTS = 1000;
 
+/** The most numbers a line of the fast lane holds (see `TextScanner.plainLines`). */
+export const PLAIN_LINE_NUMBERS = 64;
+
+/** Lines of plain numbers read ahead by `TextScanner.plainLines`, in arrays kept for batch after batch. */
+export class PlainLines {
+  readonly values = new Float64Array(16384);
+  /** 1 where the number was written as a whole number. */
+  readonly integral = new Uint8Array(16384);
+  /** Line r's numbers are `values[ends[r - 1] … ends[r])` (from 0 for line 0). */
+  readonly ends = new Uint32Array(2048);
+  /** Where line r starts (line 0: where the cursor was); one more, where the last line read ends. */
+  readonly starts = new Uint32Array(2049);
+  /** The number of line 0, and where it starts. */
+  firstLine = 0;
+  firstLineStart = 0;
+}
+
 export class TextScanner {
   readonly bytes: Uint8Array;
   readonly format: string;
@@ -159,58 +176,37 @@ export class TextScanner {
    */
   number(): number {
     this.skipSpaces();
-    const bytes = this.bytes;
     const start = this.pos;
-    let i = start;
-    let c = bytes[i];
-    const negative = c === MINUS;
-    if (negative || c === PLUS) c = bytes[++i];
-    let mantissa = 0;
-    let digits = 0;
-    let exponent = 0;
-    while (c >= ZERO && c <= NINE) {
-      mantissa = mantissa * 10 + (c - ZERO);
-      digits++;
-      c = bytes[++i];
-    }
-    let integral = true;
-    if (c === DOT) {
-      integral = false;
-      c = bytes[++i];
-      while (c >= ZERO && c <= NINE) {
-        mantissa = mantissa * 10 + (c - ZERO);
-        digits++;
-        exponent--;
-        c = bytes[++i];
-      }
-    }
-    if (digits === 0) this.notANumber(start);
-    if (c === LOWER_E || c === UPPER_E) {
-      integral = false;
-      c = bytes[++i];
-      const negativeExponent = c === MINUS;
-      if (negativeExponent || c === PLUS) c = bytes[++i];
-      if (!(c >= ZERO && c <= NINE)) this.notANumber(start);
-      let written = 0;
-      while (c >= ZERO && c <= NINE) {
-        if (written < 100000) written = written * 10 + (c - ZERO);
-        c = bytes[++i];
-      }
-      exponent += negativeExponent ? -written : written;
-    }
-    if (!this.isDelimiter(c)) this.notANumber(start);
-    this.pos = i;
-    this.integral = integral;
-    let value: number;
-    if (mantissa < EXACT_INTEGER_LIMIT && exponent >= -22 && exponent <= 22) {
-      value = exponent < 0 ? mantissa / EXACT_POWERS_OF_TEN[-exponent] : mantissa * EXACT_POWERS_OF_TEN[exponent];
-      if (negative) value = -value;
-    } else {
-      // many digits or a large exponent: let the engine round this one token
-      value = Number(decodeText(bytes, start, i));
-      if (!Number.isFinite(value)) this.fail(`the number '${this.token(start)}' is too large`, start);
-    }
-    return value;
+    const end = scanNumber(this.bytes, start, this.hashComments);
+    if (end < 0) this.notANumber(start);
+    if (Number.isNaN(scanned.value)) this.fail(`the number '${this.token(start)}' is too large`, start);
+    this.pos = end;
+    this.integral = scanned.integral;
+    return scanned.value;
+  }
+
+  /**
+   * The fast lane for lines of plain numbers, which most lines of most files are: reads up to
+   * `maxLines` lines from the cursor on into `batch`, each line being up to `PLAIN_LINE_NUMBERS`
+   * numbers separated by spaces, and returns how many lines it read. It stops before the first
+   * other line (a comment, a word, a number beyond a double's range, too many numbers, no number at
+   * all), which the caller then reads token by token, and which also says what is wrong with it,
+   * and before a last line that no line feed ends. Either way a number gets the same value. The
+   * cursor moves to the start of the line after the last one read; `backTo` moves it back to one.
+   */
+  plainLines(batch: PlainLines, maxLines: number): number {
+    batch.firstLine = this.line;
+    batch.firstLineStart = this.lineStart;
+    const lines = scanPlainLines(this.bytes, this.pos, batch, maxLines);
+    if (lines > 0) this.backTo(batch, lines);
+    return lines;
+  }
+
+  /** Moves the cursor back to the start of line `r` of the last `plainLines` batch. */
+  backTo(batch: PlainLines, r: number): void {
+    this.pos = batch.starts[r];
+    this.line = batch.firstLine + r;
+    this.lineStart = r === 0 ? batch.firstLineStart : batch.starts[r];
   }
 
   /**
@@ -276,6 +272,122 @@ export class TextScanner {
     this.line++;
     this.lineStart = this.pos;
   }
+}
+
+/** What `scanNumber` found last; `value` is NaN when the number is beyond the range of a double. */
+const scanned = { value: 0, integral: true, exponent: 0 };
+
+/**
+ * Scans the number written at `i` and returns where it ends, or -1 when no number is written there
+ * (it must end at a space, the line's end, the file's end or, with `hashComments`, a `#`). Its value
+ * goes to `scanned`: the mantissa is gathered as an integer and scaled by one exact power of ten
+ * (see the top of this file), or else the engine rounds it.
+ */
+function scanNumber(bytes: Uint8Array, i: number, hashComments: boolean): number {
+  const start = i;
+  let c = bytes[i];
+  const negative = c === MINUS;
+  if (negative || c === PLUS) c = bytes[++i];
+  let mantissa = 0;
+  let digits = 0;
+  let exponent = 0;
+  let integral = true;
+  while (c >= ZERO && c <= NINE) {
+    mantissa = mantissa * 10 + (c - ZERO);
+    digits++;
+    c = bytes[++i];
+  }
+  if (c === DOT) {
+    integral = false;
+    c = bytes[++i];
+    while (c >= ZERO && c <= NINE) {
+      mantissa = mantissa * 10 + (c - ZERO);
+      digits++;
+      exponent--;
+      c = bytes[++i];
+    }
+  }
+  if (digits === 0) return -1;
+  if (c === LOWER_E || c === UPPER_E) {
+    integral = false;
+    i = scanExponent(bytes, i + 1);
+    if (i < 0) return -1;
+    exponent += scanned.exponent;
+    c = bytes[i];
+  }
+  if (!(c === undefined || c <= SPACE || (c === HASH && hashComments))) return -1;
+  scanned.integral = integral;
+  if (mantissa < EXACT_INTEGER_LIMIT && exponent >= -22 && exponent <= 22) {
+    const value = exponent < 0 ? mantissa / EXACT_POWERS_OF_TEN[-exponent] : mantissa * EXACT_POWERS_OF_TEN[exponent];
+    scanned.value = negative ? -value : value;
+  } else {
+    scanned.value = engineValue(bytes, start, i);
+  }
+  return i;
+}
+
+/**
+ * A number of many digits or a large exponent, rounded by the engine's own parser; NaN when it is
+ * beyond the range of a double.
+ */
+function engineValue(bytes: Uint8Array, start: number, end: number): number {
+  const value = Number(decodeText(bytes, start, end));
+  return Number.isFinite(value) ? value : Number.NaN;
+}
+
+/**
+ * The loop of `TextScanner.plainLines`, from byte `pos` on. It touches no object but its arrays
+ * and leaves the scanner's fields to its caller: written on the way out of the loop, they made the
+ * engine throw its optimised code away again and again (it optimises a long loop before it has
+ * seen the code after it run).
+ */
+function scanPlainLines(bytes: Uint8Array, pos: number, batch: PlainLines, maxLines: number): number {
+  const end = bytes.length;
+  const { values, integral, ends, starts } = batch;
+  const most = Math.min(maxLines, ends.length);
+  let lines = 0;
+  let n = 0;
+  let i = pos;
+  for (;;) {
+    starts[lines] = i;
+    if (lines === most || n + PLAIN_LINE_NUMBERS > values.length) return lines;
+    const first = n;
+    while (i < end) {
+      const c = bytes[i];
+      if (c === LF) break;
+      if (c <= SPACE) {
+        i++;
+        continue;
+      }
+      const next = n - first < PLAIN_LINE_NUMBERS ? scanNumber(bytes, i, false) : -1;
+      if (next < 0 || Number.isNaN(scanned.value)) return lines;
+      values[n] = scanned.value;
+      integral[n++] = scanned.integral ? 1 : 0;
+      i = next;
+    }
+    if (i === end || n === first) return lines;
+    ends[lines++] = n;
+    i++;
+  }
+}
+
+/**
+ * Scans the digits of an exponent at `i` (after its `e`) into `scanned.exponent`; returns where
+ * they end, or -1 when there are none. Apart from `scanNumber`, the rarer part, so that
+ * `scanNumber` stays small enough for the engine to build into the fast lane's loop.
+ */
+function scanExponent(bytes: Uint8Array, i: number): number {
+  let c = bytes[i];
+  const negative = c === MINUS;
+  if (negative || c === PLUS) c = bytes[++i];
+  if (!(c >= ZERO && c <= NINE)) return -1;
+  let written = 0;
+  while (c >= ZERO && c <= NINE) {
+    if (written < 100000) written = written * 10 + (c - ZERO);
+    c = bytes[++i];
+  }
+  scanned.exponent = negative ? -written : written;
+  return i;
 }
 
 function tokenEnd(bytes: Uint8Array, start: number): number {
