@@ -21,17 +21,27 @@ export function firstNonFiniteValue(soup: PolygonSoup): string | null {
   ];
   for (const [element, attributes] of groups) {
     for (const { name, itemSize, data } of attributes) {
-      for (let i = 0; i < data.length; i++) {
-        const x = data[i];
-        // x − x is 0 for every finite number, NaN for NaN and both infinities
-        if (x - x === 0) continue;
-        const where = `${element} ${Math.floor(i / itemSize)}'s ${name}${itemSize > 1 ? ` (item ${i % itemSize})` : ''}`;
-        const storage = data instanceof Float32Array ? 'float32' : 'float64';
-        return Number.isNaN(x)
-          ? `${where} is NaN, not a number`
-          : `${where} is ${x > 0 ? '' : 'minus '}infinity: a value written as infinite, or beyond the range of ${storage}, where it is kept`;
-      }
+      // only floating-point arrays can hold such a value
+      if (!(data instanceof Float32Array || data instanceof Float64Array)) continue;
+      const i = firstNonFinite(data);
+      if (i < 0) continue;
+      const x = data[i];
+      const where = `${element} ${Math.floor(i / itemSize)}'s ${name}${itemSize > 1 ? ` (item ${i % itemSize})` : ''}`;
+      const storage = data instanceof Float32Array ? 'float32' : 'float64';
+      return Number.isNaN(x)
+        ? `${where} is NaN, not a number`
+        : `${where} is ${x > 0 ? '' : 'minus '}infinity: a value written as infinite, or beyond the range of ${storage}, where it is kept`;
     }
   }
   return null;
+}
+
+/** Where the first NaN or infinite value of `data` is, or -1. */
+function firstNonFinite(data: Float32Array | Float64Array): number {
+  for (let i = 0; i < data.length; i++) {
+    const x = data[i];
+    // x − x is 0 for every finite number, NaN for NaN and both infinities
+    if (x - x !== 0) return i;
+  }
+  return -1;
 }
