@@ -143,17 +143,19 @@ export class App {
     void this.ready.then(() => this.surface.prepareColours(this.viewer));
     this.gizmo = new PlaneGizmo(this.viewer, (plane) => this.operations.setPlane(plane));
     this.viewer.add(this.gizmo.group);
-    this.detail = new ViewDetail(this.viewer, this.surface, this.arrows, this.byId('arrow-note'), () => ({
-      mesh: this.mesh,
-      stats: this.snapshot?.stats ?? null,
-      inspection: this.inspection,
-      scale: this.scale,
-    }));
+    this.detail = new ViewDetail(
+      this.viewer,
+      this.surface,
+      this.arrows,
+      this.byId('arrow-note'),
+      () => ({ mesh: this.mesh, stats: this.snapshot?.stats ?? null, inspection: this.inspection, scale: this.scale }),
+      () => this.frameAgainIfCovered(),
+    );
     this.viewer.controls.addEventListener('end', () => this.detail.refreshIfPartial());
     this.viewer.beforeDraw = () => this.detail.fit();
     // labels and framed meshes keep off the overlays on the view
     this.viewer.overlays = () =>
-      ['legend', 'hud', 'status', 'values-legend'].flatMap((id) => {
+      ['legend', 'hud', 'status', 'values-legend', 'arrow-note'].flatMap((id) => {
         const overlay = this.byId(id);
         const rect = overlay.getBoundingClientRect();
         // an overlay an embed hides by its style has no size, and covers nothing
@@ -370,10 +372,9 @@ export class App {
     else if (this.inspection.marks.quiz) this.quiz.end();
     this.drawSelection();
     this.drawPanels();
-    // framed last: the overlays it keeps the mesh clear of now show this mesh's counts. A view
-    // the app framed and nobody has moved since is framed again when an overlay has come over the
-    // mesh (a phase card while stepping); one the user placed, or a selection framed, stays
-    if (frame || (this.framedWhole && this.viewer.overlaysCoverFramed())) this.frameMesh();
+    // framed last: the overlays it keeps the mesh clear of now show this mesh's counts
+    if (frame) this.frameMesh();
+    else this.frameAgainIfCovered();
     this.markReady();
     if (snapshot.pending) void this.completeDetails(snapshot);
   }
@@ -390,6 +391,15 @@ export class App {
     if (!details || this.snapshot !== snapshot || details.version !== snapshot.version) return;
     Object.assign(snapshot, { stats: details.stats, problems: details.problems, unavailable: details.unavailable, pending: false });
     this.drawPanels();
+  }
+
+  /**
+   * A view the app framed and nobody has moved since is framed again when an overlay has come
+   * over the mesh (a phase card while stepping, the note that the arrows are too small to draw);
+   * one the user placed, or a selection framed, stays.
+   */
+  private frameAgainIfCovered(): void {
+    if (this.framedWhole && this.viewer.overlaysCoverFramed()) this.frameMesh();
   }
 
   frameMesh(): void {

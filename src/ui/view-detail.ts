@@ -40,6 +40,8 @@ export class ViewDetail {
     private readonly arrows: ArrowLayer,
     private readonly note: HTMLElement,
     private readonly context: () => DetailContext,
+    /** Called when the note comes up, which may cover part of the mesh. */
+    private readonly noteShown: () => void,
   ) {}
 
   /**
@@ -100,11 +102,13 @@ export class ViewDetail {
   /** Says which arrows are drawn when not all of them are. */
   private showNote(): void {
     const { mesh, inspection } = this.context();
+    const wasHidden = this.note.hidden;
     this.note.hidden = !mesh || (!this.arrowsHidden && mesh.nHalfedges <= MAX_ARROWS);
     if (!mesh || this.note.hidden) return;
     this.note.textContent = this.arrowsHidden
       ? `Zoom in to see the halfedge arrows: at this zoom an edge is under ${MIN_ARROW_EDGE_PIXELS} pixels long.`
       : `Large mesh: arrows drawn for ${this.arrows.shown.length.toLocaleString('en')} of ${mesh.nHalfedges.toLocaleString('en')} halfedges, around the ${inspection.selection ? 'selection' : 'centre of the view'}.`;
+    if (wasHidden) this.noteShown();
   }
 
   /** The face to grow the drawn arrows from: the selection's, or the one where the view is centred (the point it orbits). */
