@@ -523,6 +523,7 @@ function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progres
   for (const { element, properties } of plan.elements) {
     const { name, count: rows } = element;
     if (properties.length === 0) continue;
+    const layout = fastLayout(properties);
     for (let row = 0, reportAt = 0; row < rows; ) {
       if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${row} of ${rows} rows of element '${name}'`);
       if (row >= reportAt) {
@@ -531,9 +532,9 @@ function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progres
       }
       // the fast lane: rows of plain numbers, a batch at a time, each stored whole when it fits
       // its properties; the first row that is not plain or does not fit is read token by token,
-      // which also says what is wrong with it
-      const lines = scanner.plainLines(batch, rows - row);
-      const r = storeRows(properties, batch, lines, row);
+      // which also says what is wrong with it (and so is every row of another layout)
+      const lines = layout === null ? 0 : scanner.plainLines(batch, rows - row);
+      const r = layout === null ? 0 : storeRows(layout, properties, batch, lines, row);
       row += r;
       if (r > 0 && r === lines) continue;
       if (r < lines) scanner.backTo(batch, r);
@@ -543,16 +544,21 @@ function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progres
   if (scanner.skipBlankLines()) plan.notes.push(`ignored the text after the last element (from line ${scanner.line})`);
 }
 
+/** The two layouts of nearly every file, which the fast lane takes (see `storeRows`); null for any other. */
+function fastLayout(properties: PropertyPlan[]): 'scalars' | 'list' | null {
+  if (properties.every((p) => p.property.countType === null)) return 'scalars';
+  return properties.length === 1 && properties[0].list !== null ? 'list' : null;
+}
+
 /**
  * The fast lane's part: stores the rows of a batch (the first being row `firstRow`) for as long as
  * each is what its properties say, as reading it token by token would find it; returns how many it
- * stored. It takes the two layouts of nearly every file: rows of scalars alone (vertices), stored
- * a column at a time, and rows of one list (faces: a count, then that many vertex indices, whole
- * numbers in range). Rows of other layouts are left to `readRowByTokens`.
+ * stored. Rows of scalars alone (vertices) are stored a column at a time; rows of one list (faces)
+ * are a count, then that many items (vertex indices: whole numbers in range).
  */
-function storeRows(properties: PropertyPlan[], batch: PlainLines, lines: number, firstRow: number): number {
+function storeRows(layout: 'scalars' | 'list', properties: PropertyPlan[], batch: PlainLines, lines: number, firstRow: number): number {
   const { values, integral, ends } = batch;
-  if (properties.every((p) => p.property.countType === null)) {
+  if (layout === 'scalars') {
     const width = properties.length;
     let rows = 0;
     while (rows < lines && ends[rows] === (rows + 1) * width) rows++;
@@ -563,8 +569,8 @@ function storeRows(properties: PropertyPlan[], batch: PlainLines, lines: number,
     }
     return rows;
   }
-  const list = properties.length === 1 ? properties[0].list : null;
-  if (list === null || lines === 0) return 0;
+  const list = properties[0].list!;
+  if (lines === 0) return 0;
   const { min, max, holdsIndices, starts } = list;
   const items = list.items.reserve(ends[lines - 1] - lines); // each line: a count, then its items
   let n = list.items.length;
