@@ -1,4 +1,6 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
+import { ParseError } from '../../src/index.js';
 import { attribute, faceLists, parseError, read } from './helpers.js';
 
 const quadAndTriangle = [
@@ -159,6 +161,53 @@ describe('OFF text, read a batch of lines at a time', () => {
     expect(Array.from(file.soup.positions)).toEqual(Array.from(expected.positions));
     expect(faceLists(file.soup)).toEqual(faceLists(expected));
     expect(file.notes).toEqual([]);
+  });
+});
+
+describe('OFF text, the fast lane against token by token', () => {
+  const SEED = 20261125;
+  const wellFormed = fc.oneof(
+    fc.integer({ min: -9, max: 9 }).map(String),
+    fc.double({ noNaN: true, noDefaultInfinity: true, min: -10, max: 10 }).map((x) => x.toPrecision(6)),
+  );
+  const number = fc.oneof(wellFormed, fc.constantFrom('1e2', '-2.5E-1', '0.30000000000000004', '1.0', '+3', '.5', 'x', '1e999'));
+  const index = fc.oneof({ weight: 6, arbitrary: fc.integer({ min: 0, max: 5 }).map(String) }, { weight: 1, arbitrary: fc.constantFrom('-1', '9', '2.0', '1e0') });
+  // now and then more numbers than any OFF vertex holds (45 in 3D)
+  const vertexLine = fc.oneof({ weight: 9, arbitrary: fc.array(number, { minLength: 2, maxLength: 7 }) }, { weight: 1, arbitrary: fc.array(wellFormed, { minLength: 44, maxLength: 47 }) });
+  // the corner count: now and then one off, or not written as a whole number; then a colour or not
+  const faceLine = fc
+    .tuple(fc.array(index, { minLength: 1, maxLength: 5 }), fc.integer({ min: -1, max: 1 }), fc.constantFrom('', '', '', '', '.0'), fc.array(number, { maxLength: 4 }))
+    .map(([ids, off, decimals, colour]) => [`${ids.length + off}${decimals}`, ...ids, ...colour]);
+  const space = fc.constantFrom(' ', '  ', '\t', ' \r');
+  const file = fc
+    .tuple(fc.array(vertexLine, { minLength: 6, maxLength: 6 }), fc.array(faceLine, { maxLength: 6 }), fc.array(space, { minLength: 12, maxLength: 12 }), fc.integer({ min: -1, max: 11 }))
+    .map(([vertices, faces, spaces, blank]) => {
+      const lines = [...vertices, ...faces].map((tokens, i) => tokens.join(spaces[i % 12]));
+      if (blank >= 0 && blank < lines.length) lines.splice(blank, 0, '');
+      return { head: `OFF\n6 ${faces.length} 0\n`, lines };
+    });
+
+  /** What a read gives, or the line and the reason of its error (the column moves with the comments). */
+  const outcome = (source: string) => {
+    try {
+      const { soup, notes, counts } = read(source);
+      return { soup, notes, counts };
+    } catch (error) {
+      if (!(error instanceof ParseError)) throw error;
+      return { line: error.location.line, reason: error.reason };
+    }
+  };
+
+  // a comment at the end of every line sends each one token by token
+  it(`reads every line as token by token reading does (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(file, ({ head, lines }) => {
+        const plain = outcome(head + lines.map((l) => `${l}\n`).join(''));
+        const commented = outcome(head + lines.map((l) => `${l} # c\n`).join(''));
+        expect(plain).toEqual(commented);
+      }),
+      { seed: SEED, numRuns: 3000 },
+    );
   });
 });
 

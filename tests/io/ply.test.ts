@@ -1,5 +1,6 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { buildMesh, tetrahedron, validate } from '../../src/index.js';
+import { buildMesh, ParseError, tetrahedron, validate } from '../../src/index.js';
 import { readMesh, writeSoup } from '../../src/core/io/index.js';
 import {
   attribute,
@@ -156,6 +157,70 @@ describe('PLY ascii rows, read a batch at a time', () => {
       [0, 2, 3],
     ]);
     expect(Array.from(file.soup.faceAttributes?.find((a) => a.name === 'flags')?.data ?? [])).toEqual([7, 9]);
+  });
+});
+
+describe('PLY text, the fast lane against token by token', () => {
+  const SEED = 20261125;
+  const wellFormed = fc.oneof(
+    fc.integer({ min: -9, max: 9 }).map(String),
+    fc.double({ noNaN: true, noDefaultInfinity: true, min: -10, max: 10 }).map((x) => x.toPrecision(6)),
+  );
+  const number = fc.oneof({ weight: 8, arbitrary: wellFormed }, { weight: 1, arbitrary: fc.constantFrom('1e2', '0.30000000000000004', '+3', '.5', 'x', '1e999') });
+  const index = fc.oneof({ weight: 8, arbitrary: fc.integer({ min: 0, max: 5 }).map(String) }, { weight: 1, arbitrary: fc.constantFrom('-1', '6', '2.0', '1e0') });
+  const vertexRow = fc.oneof({ weight: 8, arbitrary: fc.array(number, { minLength: 3, maxLength: 3 }) }, { weight: 1, arbitrary: fc.array(number, { minLength: 2, maxLength: 4 }) });
+  // the count: now and then one off, or not written as a whole number
+  const faceRow = fc
+    .tuple(fc.array(index, { minLength: 1, maxLength: 5 }), fc.integer({ min: -1, max: 1 }), fc.constantFrom('', '', '', '', '.0'))
+    .map(([ids, off, decimals]) => [`${Math.max(0, ids.length + off)}${decimals}`, ...ids]);
+  const space = fc.constantFrom(' ', '  ', '\t', ' \r');
+  const file = fc.tuple(
+    fc.array(vertexRow, { minLength: 6, maxLength: 6 }),
+    fc.array(faceRow, { maxLength: 6 }),
+    fc.array(space, { minLength: 12, maxLength: 12 }),
+    fc.integer({ min: -1, max: 11 }),
+  );
+
+  /**
+   * An ascii PLY of these rows. `padded` puts a property first in each element (an empty list
+   * before a vertex's x y z, a scalar before a face's list), which sends every row token by token.
+   */
+  const ply = ([vertices, faces, spaces, blank]: [string[][], string[][], string[], number], padded: boolean) => {
+    const pad = (rows: string[][]) => (padded ? rows.map((r) => ['0', ...r]) : rows);
+    const rows = [...pad(vertices), ...pad(faces)].map((r, i) => r.join(spaces[i % 12]));
+    if (blank >= 0 && blank < rows.length) rows.splice(blank, 0, '');
+    const header = [
+      'ply',
+      'format ascii 1.0',
+      'element vertex 6',
+      ...(padded ? ['property list uchar int pad'] : []),
+      ...['x', 'y', 'z'].map((name) => `property float ${name}`),
+      `element face ${faces.length}`,
+      ...(padded ? ['property uchar pad'] : []),
+      'property list uchar int vertex_indices',
+      'end_header',
+    ];
+    return `${[...header, ...rows].join('\n')}\n`;
+  };
+
+  /** What a read gives (positions and faces), or which line of the data its error is on. */
+  const outcome = (source: string) => {
+    try {
+      const { soup } = read(source);
+      return { positions: Array.from(soup.positions), faces: faceLists(soup) };
+    } catch (error) {
+      if (!(error instanceof ParseError)) throw error;
+      return { dataLine: error.location.line! - source.split('\n').indexOf('end_header') - 1 };
+    }
+  };
+
+  it(`reads every row as token by token reading does (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(file, (rows) => {
+        expect(outcome(ply(rows, false))).toEqual(outcome(ply(rows, true)));
+      }),
+      { seed: SEED, numRuns: 3000 },
+    );
   });
 });
 
