@@ -11,6 +11,10 @@
  * usual case, "0.123456" or "-1.5e-3". Anything else falls back to the engine's own parser on that
  * one token, so every value is read exactly.
  *
+ * Most lines of most files are nothing but numbers: `plainLines` reads those a batch of lines at a
+ * time, in a loop that builds no string and calls nothing per token, and stops at the first other
+ * line, which the reader then takes token by token (and which, if it is wrong, says how).
+ *
  * Formats differ only in what counts as a comment: OFF and OBJ skip from `#` to the end of the
  * line, PLY has no comments in its data.
  *
@@ -53,7 +57,7 @@ export interface ScannerOptions {
 const MAX_COMMENTS = 1000;
 
 /** The most numbers a line of the fast lane holds (see `TextScanner.plainLines`). */
-export const PLAIN_LINE_NUMBERS = 64;
+const PLAIN_LINE_NUMBERS = 64;
 
 /** Lines of plain numbers read ahead by `TextScanner.plainLines`, in arrays kept for batch after batch. */
 export class PlainLines {
