@@ -22,11 +22,23 @@ export class GrowableArray<T extends GrowableData> {
   /** Makes room for `extra` more values and returns the (possibly new) backing array. */
   reserve(extra: number): T {
     const needed = this.length + extra;
-    if (needed > this.data.length) {
-      const grown = this.make(Math.max(needed, 2 * this.data.length));
-      grown.set(this.data.subarray(0, this.length));
-      this.data = grown;
-    }
+    if (needed > this.data.length) this.grow(Math.max(needed, 2 * this.data.length));
+    return this.data;
+  }
+
+  /**
+   * Makes room for the `extra` values of row `row` of `rows`, and returns the (possibly new)
+   * backing array. The rows of one element mostly hold as many values each (faces of four corners
+   * in an array sized for triangles, say), so when it must grow it grows to what the rows so far
+   * hold on average times all the rows, rather than doubling and being trimmed again; never to more
+   * than `most`, what the rest of the file can hold. An estimate that would hardly grow it (later
+   * rows longer than the first) gives way to doubling.
+   */
+  reserveRow(extra: number, row: number, rows: number, most: number): T {
+    const needed = this.length + extra;
+    if (needed <= this.data.length) return this.data;
+    const estimate = Math.min(Math.ceil((needed / (row + 1)) * rows), most);
+    this.grow(Math.max(needed, estimate >= this.data.length * 1.125 ? estimate : 2 * this.data.length));
     return this.data;
   }
 
@@ -39,6 +51,12 @@ export class GrowableArray<T extends GrowableData> {
   pushRepeated(value: number, count: number): void {
     this.reserve(count).fill(value, this.length, this.length + count);
     this.length += count;
+  }
+
+  private grow(capacity: number): void {
+    const grown = this.make(capacity);
+    grown.set(this.data.subarray(0, this.length));
+    this.data = grown;
   }
 
   /** The values written so far, in an array of exactly that length. */

@@ -405,7 +405,7 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
     if (degree > (bytes.length - scanner.pos + 1) / 2) {
       scanner.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, at);
     }
-    const indices = faceIndices.reserve(degree);
+    const indices = faceIndices.reserveRow(degree, f, faceCount, faceIndices.length + (bytes.length - scanner.pos + 1) / 2);
     let n = faceIndices.length;
     for (let k = 0; k < degree; k++) {
       if (scanner.atLineEnd() && !scanner.skipBlankLines()) {
@@ -451,7 +451,7 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
         reportAt = f + PROGRESS_ROWS;
       }
       const lines = scanner.plainLines(batch, faceCount - f);
-      const r = storeFaces(mesh, batch, lines, f, vertexCount);
+      const r = storeFaces(mesh, batch, lines, f, bytes.length - scanner.pos);
       f += r;
       if (r > 0 && r === lines) continue;
       if (r < lines) scanner.backTo(batch, r);
@@ -487,11 +487,14 @@ function storeVertices(mesh: OffMesh, batch: PlainLines, lines: number, firstVer
 }
 
 /**
- * The fast lane's part for faces: stores the lines of a batch (the first being face `firstFace`)
- * for as long as each line holds one whole face (a corner count, that many vertex ids in range,
- * whole numbers all, then what `setFaceColor` takes); returns how many it stored.
+ * The fast lane's part for faces: stores the lines of a batch (the first being face `firstFace`,
+ * `bytesLeft` bytes of the file after it) for as long as each line holds one whole face (a corner
+ * count, that many vertex ids in range, whole numbers all, then what `setFaceColor` takes);
+ * returns how many it stored.
  */
-function storeFaces(mesh: OffMesh, batch: PlainLines, lines: number, firstFace: number, vertexCount: number): number {
+function storeFaces(mesh: OffMesh, batch: PlainLines, lines: number, firstFace: number, bytesLeft: number): number {
+  const vertexCount = mesh.positions.length / 3;
+  const faceCount = mesh.faceStarts.length - 1;
   const { values, integral, ends } = batch;
   const { faceStarts, faceIndices } = mesh;
   let r = 0;
@@ -503,7 +506,8 @@ function storeFaces(mesh: OffMesh, batch: PlainLines, lines: number, firstFace: 
     let k = from + 1;
     while (k <= last && integral[k] && values[k] >= 0 && values[k] < vertexCount) k++;
     if (k <= last || mesh.setFaceColor(firstFace + r, values, integral, last + 1, to - last - 1) !== null) break;
-    const indices = faceIndices.reserve(degree);
+    // what the rest of the batch and the file after it can hold: an index takes at least two bytes
+    const indices = faceIndices.reserveRow(degree, firstFace + r, faceCount, faceIndices.length + ends[lines - 1] + bytesLeft / 2);
     let n = faceIndices.length;
     for (k = from + 1; k <= last; k++) indices[n++] = values[k];
     faceIndices.length = n;
@@ -611,7 +615,7 @@ function readBinaryLayout(bytes: Uint8Array, start: number, keywordShape: OffSha
     if (4 * degree > reader.remaining) {
       reader.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, degreeAt);
     }
-    const indices = faceIndices.reserve(degree);
+    const indices = faceIndices.reserveRow(degree, f, faceCount, faceIndices.length + reader.remaining / 4);
     let n = faceIndices.length;
     for (let k = 0; k < degree; k++) {
       const indexAt = reader.offset;

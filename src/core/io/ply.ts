@@ -299,6 +299,14 @@ class ListCollector<T extends ListItems = ListItems> {
     this.max = max;
     this.holdsIndices = Number.isFinite(min);
   }
+
+  /**
+   * Room for `count` more items in row `row`, the rest of the file holding at most `more`; returns
+   * the items' array (see `GrowableArray.reserveRow`).
+   */
+  reserve(count: number, row: number, more: number): T {
+    return this.items.reserveRow(count, row, this.starts.length - 1, this.items.length + more);
+  }
 }
 
 interface PropertyPlan {
@@ -534,7 +542,7 @@ function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progres
       // its properties; the first row that is not plain or does not fit is read token by token,
       // which also says what is wrong with it (and so is every row of another layout)
       const lines = layout === null ? 0 : scanner.plainLines(batch, rows - row);
-      const r = layout === null ? 0 : storeRows(layout, properties, batch, lines, row);
+      const r = layout === null ? 0 : storeRows(layout, properties, batch, lines, row, bytes.length - scanner.pos);
       row += r;
       if (r > 0 && r === lines) continue;
       if (r < lines) scanner.backTo(batch, r);
@@ -551,12 +559,19 @@ function fastLayout(properties: PropertyPlan[]): 'scalars' | 'list' | null {
 }
 
 /**
- * The fast lane's part: stores the rows of a batch (the first being row `firstRow`) for as long as
- * each is what its properties say, as reading it token by token would find it; returns how many it
- * stored. Rows of scalars alone (vertices) are stored a column at a time; rows of one list (faces)
+ * The fast lane's part: stores the rows of a batch (the first being row `firstRow`, `bytesLeft`
+ * bytes of the file after it) for as long as each is what its properties say, as reading it token
+ * by token would find it; returns how many it stored. Rows of scalars alone (vertices) are stored a column at a time; rows of one list (faces)
  * are a count, then that many items (vertex indices: whole numbers in range).
  */
-function storeRows(layout: 'scalars' | 'list', properties: PropertyPlan[], batch: PlainLines, lines: number, firstRow: number): number {
+function storeRows(
+  layout: 'scalars' | 'list',
+  properties: PropertyPlan[],
+  batch: PlainLines,
+  lines: number,
+  firstRow: number,
+  bytesLeft: number,
+): number {
   const { values, integral, ends } = batch;
   if (layout === 'scalars') {
     const width = properties.length;
@@ -572,7 +587,8 @@ function storeRows(layout: 'scalars' | 'list', properties: PropertyPlan[], batch
   const list = properties[0].list!;
   if (lines === 0) return 0;
   const { min, max, holdsIndices, starts } = list;
-  const items = list.items.reserve(ends[lines - 1] - lines); // each line: a count, then its items
+  // each line is a count, then its items; after the batch, an item takes at least two bytes
+  const items = list.reserve(ends[lines - 1] - lines, firstRow + lines - 1, ends[lines - 1] - lines + bytesLeft / 2);
   let n = list.items.length;
   let r = 0;
   for (let from = 0; r < lines; r++) {
@@ -622,7 +638,7 @@ function readRowByTokens(scanner: TextScanner, element: PlyElement, properties: 
       }
       continue;
     }
-    const items = list.items.reserve(count);
+    const items = list.reserve(count, row, (bytes.length - scanner.pos + 1) / 2);
     let n = list.items.length;
     for (let k = 0; k < count; k++) {
       if (scanner.atLineEnd()) scanner.fail(listEndsEarly(element, row, p, count, k));
@@ -716,7 +732,7 @@ function readRowsWithLists(
         offset += count * size;
         continue;
       }
-      const items = list.items.reserve(count);
+      const items = list.reserve(count, row, (end - offset) / size);
       const first = list.items.length;
       type.readRun(view, offset, size, count, littleEndian, items, first, 1);
       for (let k = first; k < first + count; k++) {
