@@ -1,5 +1,6 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { buildMesh, validate } from '../../src/index.js';
+import { buildMesh, ParseError, validate } from '../../src/index.js';
 import { attribute, faceLists, parseError, read } from './helpers.js';
 
 const square = 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n';
@@ -69,6 +70,16 @@ describe('OBJ faces', () => {
 });
 
 describe('malformed OBJ', () => {
+  it('names the line and column of a bad index thousands of lines in, read a batch at a time', () => {
+    const vertices = Array.from({ length: 6000 }, (_, i) => `v ${i >> 1} ${i & 1} ${i / 8}`);
+    const faces = Array.from({ length: 2999 }, (_, i) => `f ${2 * i + 1} ${2 * i + 3} ${2 * i + 2}`);
+    faces[2500] = 'f 5001 5003 0';
+    // 6000 vertex lines, then face 2500; the 0 after 'f 5001 5003 '
+    expect(parseError(() => read([...vertices, ...faces, ''].join('\n'), 'strip.obj')).message).toBe(
+      `obj: line ${6000 + 2501}, column 13: face 2500: OBJ vertex indices count from 1; 0 names nothing`,
+    );
+  });
+
   it('names the line, column and face of an out-of-range index', () => {
     const error = parseError(() => read(`${square}f 1 2 3\nf 1 3 17\n`));
     expect(error.message).toBe('obj: line 6, column 7: face 1: vertex index 17 names nothing: it is out of range 1..4');
@@ -96,5 +107,46 @@ describe('malformed OBJ', () => {
       "obj: line 5, column 7: expected a whole number, found '3a'",
     );
     expect(parseError(() => read('vn 0 0\n')).message).toMatch(/line 1, column 1: a normal has 3 numbers/);
+  });
+});
+
+describe('OBJ, the fast lane against token by token', () => {
+  const SEED = 20261125;
+  const coordinate = fc.oneof(
+    { weight: 8, arbitrary: fc.double({ noNaN: true, noDefaultInfinity: true, min: -10, max: 10 }).map((x) => x.toFixed(6)) },
+    { weight: 1, arbitrary: fc.constantFrom('1e2', '0.30000000000000004', '+3', 'x', '1e999') },
+  );
+  const corner = fc.oneof(
+    { weight: 8, arbitrary: fc.integer({ min: -6, max: 8 }).map(String) },
+    { weight: 1, arbitrary: fc.constantFrom('1.0', '1/1', '2//1', '3/2/1') },
+  );
+  const statement = fc.oneof(
+    { weight: 4, arbitrary: fc.array(coordinate, { minLength: 2, maxLength: 7 }).map((xs) => `v ${xs.join(' ')}`) },
+    { weight: 3, arbitrary: fc.array(corner, { minLength: 0, maxLength: 5 }).map((cs) => `f ${cs.join(' ')}`) },
+    { weight: 1, arbitrary: fc.constantFrom('vt 0.5 0.5', 'vn 0 0 1', 'g part', 'v\t1 2 3', 'f\t1 2 3', '') },
+  );
+  const file = fc.array(statement, { maxLength: 30 });
+
+  /** What a read gives, or the line and the reason of its error (the column moves with the comments). */
+  const outcome = (source: string) => {
+    try {
+      const { soup, notes, counts } = read(source, 'test.obj');
+      return { soup, notes, counts };
+    } catch (error) {
+      if (!(error instanceof ParseError)) throw error;
+      return { line: error.location.line, reason: error.reason };
+    }
+  };
+
+  // a comment at the end of every line sends each one token by token
+  it(`reads every statement as token by token reading does (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(file, (lines) => {
+        const plain = outcome(lines.map((l) => `${l}\n`).join(''));
+        const commented = outcome(lines.map((l) => `${l} # c\n`).join(''));
+        expect(plain).toEqual(commented);
+      }),
+      { seed: SEED, numRuns: 3000 },
+    );
   });
 });

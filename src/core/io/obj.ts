@@ -20,11 +20,13 @@ import { plural } from '../report.js';
 import type { SoupAttribute } from '../soup.js';
 import { GrowableArray } from './growable.js';
 import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
-import { TextScanner } from './text.js';
+import { PlainLines, TextScanner } from './text.js';
 
 const SLASH = 47;
 const SPACE = 32;
 const HASH = 35;
+const LOWER_F = 102;
+const LOWER_V = 118;
 
 /** A face index read before its element was defined, kept to check once the file is read. */
 interface ForwardReference {
@@ -82,7 +84,8 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
   const positions = new GrowableArray((n) => new Float64Array(n), 3 * guess);
   const texcoords = new GrowableArray((n) => new Float32Array(n), 0);
   const normals = new GrowableArray((n) => new Float32Array(n), 0);
-  let colors: GrowableArray<Float32Array<ArrayBuffer>> | null = null;
+  // typed by assertion: `addVertex` sets it, where the compiler does not look when it narrows
+  let colors = null as GrowableArray<Float32Array<ArrayBuffer>> | null;
   const faceStarts = new GrowableArray((n) => new Uint32Array(n), guess);
   faceStarts.push(0);
   const faceIndices = new GrowableArray((n) => new Uint32Array(n), 3 * guess);
@@ -117,29 +120,83 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
     return ids;
   };
 
+  /**
+   * Adds a vertex from the `count` numbers at `source[at]`: x y z, then an optional w (dropped) or
+   * a colour r g b; false, adding nothing, for any other count.
+   */
+  const addVertex = (source: Float64Array, at: number, count: number): boolean => {
+    if (count !== 3 && count !== 4 && count !== 6) return false;
+    const data = positions.reserve(3);
+    for (let k = 0; k < 3; k++) data[positions.length++] = source[at + k];
+    if (count === 6) {
+      if (!colors) {
+        colors = new GrowableArray((n) => new Float32Array(n), positions.data.length);
+        colors.pushRepeated(Number.NaN, positions.length - 3);
+      }
+      for (let k = 3; k < 6; k++) colors.push(source[at + k]);
+    } else if (colors) {
+      for (let k = 0; k < 3; k++) colors.push(Number.NaN);
+    }
+    vertexIds.count++;
+    return true;
+  };
+
+  // the fast lane: runs of plain 'v x y z' and 'f i j k' lines, a batch at a time, each stored
+  // when it is a whole vertex, or a face of vertices already defined; the first other line, and
+  // every other statement, is read token by token, which also says what is wrong with it
+  const batch = new PlainLines();
+  const { values: numbers, integral, ends } = batch;
+  /** Stores the batch's `lines` vertex lines for as long as each is a vertex; returns how many. */
+  const storeVertices = (lines: number): number => {
+    let r = 0;
+    for (let from = 0; r < lines && addVertex(numbers, from, ends[r] - from); r++) from = ends[r];
+    return r;
+  };
+  /** The 0-based vertex a face's corner names, or -1 for a number the token path must read (and may refuse). */
+  const cornerVertex = (k: number): number => {
+    const written = numbers[k];
+    const index = written > 0 ? written - 1 : vertexIds.count + written;
+    return integral[k] && written !== 0 && index >= 0 && index < vertexIds.count ? index : -1;
+  };
+  /** Stores the batch's `lines` face lines for as long as each names vertices already defined; returns how many. */
+  const storeFaces = (lines: number): number => {
+    let r = 0;
+    for (let from = 0; r < lines; r++) {
+      const to = ends[r];
+      let k = from;
+      while (k < to && cornerVertex(k) >= 0) k++;
+      if (k < to) break;
+      for (k = from; k < to; k++) {
+        faceIndices.push(cornerVertex(k));
+        cornerTexcoords?.push(-1);
+        cornerNormals?.push(-1);
+      }
+      faceStarts.push(faceIndices.length);
+      from = to;
+    }
+    return r;
+  };
+
   while (scanner.skipBlankLines()) {
+    const lead = bytes[scanner.pos];
+    if (lead === LOWER_V || lead === LOWER_F) {
+      const lines = scanner.plainLines(batch, Infinity, lead);
+      const r = lead === LOWER_V ? storeVertices(lines) : storeFaces(lines);
+      if ((statements ^ (statements + r)) > PROGRESS_ROWS) progress(scanner.pos / bytes.length);
+      statements += r;
+      if (r > 0 && r === lines) continue;
+      if (r < lines) scanner.backTo(batch, r);
+    }
     if ((++statements & PROGRESS_ROWS) === 0) progress(scanner.pos / bytes.length);
     const keywordAt = scanner.pos;
     const keyword = scanner.word();
     switch (keyword) {
       case 'v': {
         const count = readNumbers('a vertex');
-        if (count !== 3 && count !== 4 && count !== 6) {
+        if (!addVertex(values, 0, count)) {
           const reason = `a vertex has x y z (then an optional w, or a colour r g b), not ${plural(count, 'number')}`;
           scanner.fail(reason, keywordAt);
         }
-        const data = positions.reserve(3);
-        for (let k = 0; k < 3; k++) data[positions.length++] = values[k];
-        if (count === 6) {
-          if (!colors) {
-            colors = new GrowableArray((n) => new Float32Array(n), positions.data.length);
-            colors.pushRepeated(Number.NaN, positions.length - 3);
-          }
-          for (let k = 3; k < 6; k++) colors.push(values[k]);
-        } else if (colors) {
-          for (let k = 0; k < 3; k++) colors.push(Number.NaN);
-        }
-        vertexIds.count++;
         break;
       }
       case 'vt': {

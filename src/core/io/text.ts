@@ -25,6 +25,7 @@
  */
 import { ParseError } from '../errors.js';
 
+const TAB = 9;
 const LF = 10;
 const SPACE = 32;
 const HASH = 35;
@@ -58,6 +59,8 @@ const MAX_COMMENTS = 1000;
 
 /** The most numbers a line of the fast lane holds (see `TextScanner.plainLines`). */
 const PLAIN_LINE_NUMBERS = 64;
+/** Lines of the fast lane start with their first number. */
+const NO_KEYWORD = -1;
 
 /** Lines of plain numbers read ahead by `TextScanner.plainLines`, in arrays kept for batch after batch. */
 export class PlainLines {
@@ -195,13 +198,15 @@ export class TextScanner {
    * numbers separated by spaces, and returns how many lines it read. It stops before the first
    * other line (a comment, a word, a number beyond a double's range, too many numbers, no number at
    * all), which the caller then reads token by token, and which also says what is wrong with it,
-   * and before a last line that no line feed ends. Either way a number gets the same value. The
-   * cursor moves to the start of the line after the last one read; `backTo` moves it back to one.
+   * and before a last line that no line feed ends. Either way a number gets the same value. With a
+   * `keyword` (a byte: OBJ's `v` or `f`), each line must start with it and a space or tab, and the
+   * numbers after it are read. The cursor moves to the start of the line after the last one read;
+   * `backTo` moves it back to one.
    */
-  plainLines(batch: PlainLines, maxLines: number): number {
+  plainLines(batch: PlainLines, maxLines: number, keyword = NO_KEYWORD): number {
     batch.firstLine = this.line;
     batch.firstLineStart = this.lineStart;
-    const lines = scanPlainLines(this.bytes, this.pos, batch, maxLines);
+    const lines = scanPlainLines(this.bytes, this.pos, batch, maxLines, keyword);
     if (lines > 0) this.backTo(batch, lines);
     return lines;
   }
@@ -345,7 +350,7 @@ function engineValue(bytes: Uint8Array, start: number, end: number): number {
  * engine throw its optimised code away again and again (it optimises a long loop before it has
  * seen the code after it run).
  */
-function scanPlainLines(bytes: Uint8Array, pos: number, batch: PlainLines, maxLines: number): number {
+function scanPlainLines(bytes: Uint8Array, pos: number, batch: PlainLines, maxLines: number, keyword: number): number {
   const end = bytes.length;
   const { values, integral, ends, starts } = batch;
   const most = Math.min(maxLines, ends.length);
@@ -355,6 +360,11 @@ function scanPlainLines(bytes: Uint8Array, pos: number, batch: PlainLines, maxLi
   for (;;) {
     starts[lines] = i;
     if (lines === most || n + PLAIN_LINE_NUMBERS > values.length) return lines;
+    if (keyword !== NO_KEYWORD) {
+      const after = bytes[i + 1];
+      if (bytes[i] !== keyword || !(after === SPACE || after === TAB)) return lines;
+      i++;
+    }
     const first = n;
     while (i < end) {
       const c = bytes[i];
