@@ -166,3 +166,22 @@ export function meshArrays(mesh: HalfedgeMesh, withAttributes = true) {
     }),
   };
 }
+
+/**
+ * Reads `head` and `lines` as written, and again with a comment at the end of every line, which
+ * sends each line of a format with `#` comments (OFF, OBJ) token by token: both must give the same
+ * soup, notes and counts, or an error on the same line for the same reason (its column moves with
+ * the comments).
+ */
+export function expectSameReadWithComments(head: string, lines: string[], fileName?: string): void {
+  const outcome = (source: string) => {
+    try {
+      const { soup, notes, counts } = read(source, fileName);
+      return { soup, notes, counts };
+    } catch (error) {
+      if (!(error instanceof ParseError)) throw error;
+      return { line: error.location.line, reason: error.reason };
+    }
+  };
+  expect(outcome(head + lines.map((l) => `${l}\n`).join(''))).toEqual(outcome(head + lines.map((l) => `${l} # c\n`).join('')));
+}

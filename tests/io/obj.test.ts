@@ -1,7 +1,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { buildMesh, ParseError, validate } from '../../src/index.js';
-import { attribute, faceLists, parseError, read } from './helpers.js';
+import { buildMesh, validate } from '../../src/index.js';
+import { attribute, expectSameReadWithComments, faceLists, parseError, read } from './helpers.js';
 
 const square = 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n';
 
@@ -127,25 +127,10 @@ describe('OBJ, the fast lane against token by token', () => {
   );
   const file = fc.array(statement, { maxLength: 30 });
 
-  /** What a read gives, or the line and the reason of its error (the column moves with the comments). */
-  const outcome = (source: string) => {
-    try {
-      const { soup, notes, counts } = read(source, 'test.obj');
-      return { soup, notes, counts };
-    } catch (error) {
-      if (!(error instanceof ParseError)) throw error;
-      return { line: error.location.line, reason: error.reason };
-    }
-  };
-
   // a comment at the end of every line sends each one token by token
   it(`reads every statement as token by token reading does (seed ${SEED})`, () => {
     fc.assert(
-      fc.property(file, (lines) => {
-        const plain = outcome(lines.map((l) => `${l}\n`).join(''));
-        const commented = outcome(lines.map((l) => `${l} # c\n`).join(''));
-        expect(plain).toEqual(commented);
-      }),
+      fc.property(file, (lines) => expectSameReadWithComments('', lines, 'test.obj')),
       { seed: SEED, numRuns: 3000 },
     );
   });

@@ -1,7 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { ParseError } from '../../src/index.js';
-import { attribute, faceLists, parseError, read } from './helpers.js';
+import { attribute, expectSameReadWithComments, faceLists, parseError, read } from './helpers.js';
 
 const quadAndTriangle = [
   [0, 1, 2, 3],
@@ -187,25 +186,10 @@ describe('OFF text, the fast lane against token by token', () => {
       return { head: `OFF\n6 ${faces.length} 0\n`, lines };
     });
 
-  /** What a read gives, or the line and the reason of its error (the column moves with the comments). */
-  const outcome = (source: string) => {
-    try {
-      const { soup, notes, counts } = read(source);
-      return { soup, notes, counts };
-    } catch (error) {
-      if (!(error instanceof ParseError)) throw error;
-      return { line: error.location.line, reason: error.reason };
-    }
-  };
-
   // a comment at the end of every line sends each one token by token
   it(`reads every line as token by token reading does (seed ${SEED})`, () => {
     fc.assert(
-      fc.property(file, ({ head, lines }) => {
-        const plain = outcome(head + lines.map((l) => `${l}\n`).join(''));
-        const commented = outcome(head + lines.map((l) => `${l} # c\n`).join(''));
-        expect(plain).toEqual(commented);
-      }),
+      fc.property(file, ({ head, lines }) => expectSameReadWithComments(head, lines)),
       { seed: SEED, numRuns: 3000 },
     );
   });
