@@ -86,6 +86,19 @@ describe('STL', () => {
     expect(faceLists(file.soup)).toEqual([[0, 1, 2, 3], [4, 5, 6]]);
   });
 
+  it('takes ascii keywords in any case, and only whole', () => {
+    // (the first word stays 'solid': it is what tells an ascii file from a binary one)
+    const shouting = asciiStl(cubeTriangles())
+      .replace(/[a-z]+/g, (word) => (word.length % 2 === 0 ? word.toUpperCase() : word[0].toUpperCase() + word.slice(1)))
+      .replace('Solid', 'solid');
+    expect(shouting).toContain('Facet NORMAL 0 0 0\n    Outer LOOP\n      VERTEX');
+    expect(faceLists(read(shouting, 'cube.stl').soup)).toEqual(faceLists(read(asciiStl(cubeTriangles())).soup));
+    const longer = asciiStl(cubeTriangles()).replace('vertex', 'vertexes');
+    expect(parseError(() => read(longer)).message).toBe(
+      "stl: line 4, column 7: expected 'vertex' or 'endloop' in facet 0, found 'vertexes'",
+    );
+  });
+
   it('says where a binary STL ends early and an ascii one goes wrong', () => {
     const bytes = binaryStl(cubeTriangles());
     const cut = parseError(() => read(bytes.subarray(0, bytes.length - 30), 'cube.stl'));

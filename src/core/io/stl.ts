@@ -127,9 +127,7 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
   const expect = (expected: string): void => {
     if (!scanner.skipBlankLines()) scanner.fail(`the file ends where '${expected}' should come`);
     const at = scanner.pos;
-    if (scanner.word().toLowerCase() !== expected) {
-      scanner.fail(`expected '${expected}', found '${scanner.token(at)}'`, at);
-    }
+    if (!scanner.isWord(expected)) scanner.fail(`expected '${expected}', found '${scanner.token(at)}'`, at);
   };
   /** Reads three numbers; `what` names them in an error (a function: built only when one comes). */
   const readPoint = (target: GrowableArray<Float32Array<ArrayBuffer>>, what: () => string): void => {
@@ -146,8 +144,7 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
   for (let pass = 0; ; pass++) {
     if (pass > bytes.length || !scanner.skipBlankLines()) scanner.fail("the file ends before 'endsolid'");
     const at = scanner.pos;
-    const keyword = scanner.word().toLowerCase();
-    if (keyword === 'endsolid') {
+    if (scanner.isWord('endsolid')) {
       scanner.nextLine();
       // some files hold several solids one after the other
       if (!scanner.skipBlankLines()) break;
@@ -155,7 +152,7 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
       comments.push(`solid ${scanner.restOfLine()}`.trim());
       continue;
     }
-    if (keyword !== 'facet') scanner.fail(`expected 'facet' or 'endsolid', found '${scanner.token(at)}'`, at);
+    if (!scanner.isWord('facet')) scanner.fail(`expected 'facet' or 'endsolid', found '${scanner.token(at)}'`, at);
     const facet = faceStarts.length - 1;
     if ((facet & PROGRESS_ROWS) === PROGRESS_ROWS) progress(scanner.pos / bytes.length);
     expect('normal');
@@ -167,9 +164,8 @@ function readAscii(bytes: Uint8Array, comments: string[], progress: Progress): T
     for (let pass = 0; ; pass++) {
       if (pass > bytes.length || !scanner.skipBlankLines()) scanner.fail(`the file ends inside facet ${facet}`);
       const wordAt = scanner.pos;
-      const word = scanner.word().toLowerCase();
-      if (word === 'endloop') break;
-      if (word !== 'vertex') {
+      if (scanner.isWord('endloop')) break;
+      if (!scanner.isWord('vertex')) {
         scanner.fail(`expected 'vertex' or 'endloop' in facet ${facet}, found '${scanner.token(wordAt)}'`, wordAt);
       }
       readPoint(corners, () => `vertex ${cornerCount} of facet ${facet}`);

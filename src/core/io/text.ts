@@ -167,6 +167,22 @@ export class TextScanner {
     return decodeText(this.bytes, start, this.pos);
   }
 
+  /**
+   * Whether the next token is `keyword` (given in lower case ASCII letters), in any case; moves past
+   * it when it is. Builds no string, for the keywords a format repeats on every line.
+   */
+  isWord(keyword: string): boolean {
+    this.skipSpaces();
+    const bytes = this.bytes;
+    const start = this.pos;
+    const end = start + keyword.length;
+    if (end > bytes.length || (end < bytes.length && bytes[end] > SPACE)) return false;
+    // setting bit 5 turns an ASCII capital into its small letter, and no other byte into a letter
+    for (let k = 0; k < keyword.length; k++) if ((bytes[start + k] | 0x20) !== keyword.charCodeAt(k)) return false;
+    this.pos = end;
+    return true;
+  }
+
   /** The rest of this line as text, trimmed, without moving to the next line. */
   restOfLine(): string {
     const bytes = this.bytes;
