@@ -639,14 +639,16 @@ function copyAttributes(soup: PolygonSoup, kept: KeptFaces, mesh: HalfedgeMesh, 
     const target = mesh.faceAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data;
     for (let f = 0; f < kept.faceCount; f++) {
       const src = faceOf(f);
-      target.set(data.subarray(src * itemSize, (src + 1) * itemSize), f * itemSize);
+      // item by item: a view of the source for each element would cost more than the copy
+      for (let k = 0; k < itemSize; k++) target[f * itemSize + k] = data[src * itemSize + k];
     }
   }
   for (const { name, itemSize, data, interpolation } of soup.cornerAttributes ?? []) {
     const target = mesh.halfedgeAttributes.add(name, attributeTypeOf(data), itemSize, interpolation).data;
     for (let c = 0; c < halfedgeOf.length; c++) {
       const src = kept.cornerSource![c];
-      target.set(data.subarray(src * itemSize, (src + 1) * itemSize), halfedgeOf[c] * itemSize);
+      const h = halfedgeOf[c];
+      for (let k = 0; k < itemSize; k++) target[h * itemSize + k] = data[src * itemSize + k];
     }
   }
 }

@@ -306,7 +306,8 @@ function gather(
   for (let c = 0; c < cornerIds.length; c++) {
     const id = cornerIds[c];
     if (id < 0) missing++;
-    else data.set(list.subarray(itemSize * id, itemSize * (id + 1)), itemSize * c);
+    // item by item: a view of the list for each corner would cost more than the copy
+    else for (let k = 0; k < itemSize; k++) data[itemSize * c + k] = list[itemSize * id + k];
   }
   if (missing > 0) notes.push(`${plural(missing, 'face corner names', 'face corners name')} no ${name} (set to zero)`);
   return { name, itemSize, data };

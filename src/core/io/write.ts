@@ -140,6 +140,9 @@ function pick(
   type: AttributeType,
 ): AttributeArray {
   const out = new attributeArrayTypes[type](itemSize * elements.length);
-  elements.forEach((e, i) => out.set(data.subarray(itemSize * e, itemSize * (e + 1)), itemSize * i));
+  // item by item: a view of the source for each element would cost more than the copy
+  elements.forEach((e, i) => {
+    for (let k = 0; k < itemSize; k++) out[itemSize * i + k] = data[itemSize * e + k];
+  });
   return out;
 }
