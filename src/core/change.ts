@@ -74,7 +74,13 @@ export function applyChange(mesh: HalfedgeMesh, record: ChangeRecord, direction:
     const source = forward ? change.new : change.old;
     const { itemSize } = change;
     if (!change.index) data.set(source, change.start * itemSize);
-    else for (let i = 0; i < change.index.length; i++) data.set(source.subarray(i * itemSize, (i + 1) * itemSize), change.index[i] * itemSize);
+    else {
+      // item by item: a view of the source for each element would cost more than the copy
+      for (let i = 0; i < change.index.length; i++) {
+        const at = change.index[i] * itemSize;
+        for (let k = 0; k < itemSize; k++) data[at + k] = source[i * itemSize + k];
+      }
+    }
   }
   mesh.slotState = to;
 }
