@@ -33,8 +33,8 @@ import { plural } from '../report.js';
 import type { PolygonSoup, SoupAttribute } from '../soup.js';
 import { BinaryReader } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
-import { PlainLines, TextScanner } from './text.js';
+import type { MeshFile, Progress } from './mesh-file.js';
+import { type PlainLines, TextScanner } from './text.js';
 
 /** `[ST][C][N][4][n]OFF`, possibly with the counts glued on (`OFF8 6 0`). */
 const KEYWORD = /^(ST)?(C)?(N)?(4)?(n)?OFF/;
@@ -427,36 +427,21 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
 
   // each element goes by the fast lane, a batch of plain lines at a time, for as long as its line
   // holds it whole; the first other one is read token by token, which also says what is wrong with it
-  const batch = new PlainLines();
   try {
-    for (let v = 0, reportAt = 0; v < vertexCount; ) {
-      if (!scanner.skipBlankLines()) {
-        scanner.fail(`the file ends after ${v} of ${plural(vertexCount, 'vertex', 'vertices')}`);
-      }
-      if (v >= reportAt) {
-        progress(scanner.pos / bytes.length);
-        reportAt = v + PROGRESS_ROWS;
-      }
-      const lines = scanner.plainLines(batch, vertexCount - v);
-      const r = storeVertices(mesh, batch, lines, v, fewest, maxValues);
-      v += r;
-      if (r > 0 && r === lines) continue;
-      if (r < lines) scanner.backTo(batch, r);
-      readVertex(v++);
-    }
-    for (let f = 0, reportAt = 0; f < faceCount; ) {
-      if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${f} of ${plural(faceCount, 'face')}`);
-      if (f >= reportAt) {
-        progress(scanner.pos / bytes.length);
-        reportAt = f + PROGRESS_ROWS;
-      }
-      const lines = scanner.plainLines(batch, faceCount - f);
-      const r = storeFaces(mesh, batch, lines, f, bytes.length - scanner.pos);
-      f += r;
-      if (r > 0 && r === lines) continue;
-      if (r < lines) scanner.backTo(batch, r);
-      readFace(f++);
-    }
+    scanner.readRows(
+      vertexCount,
+      (batch, lines, v) => storeVertices(mesh, batch, lines, v, fewest, maxValues),
+      readVertex,
+      (v) => `the file ends after ${v} of ${plural(vertexCount, 'vertex', 'vertices')}`,
+      progress,
+    );
+    scanner.readRows(
+      faceCount,
+      (batch, lines, f, bytesLeft) => storeFaces(mesh, batch, lines, f, bytesLeft),
+      readFace,
+      (f) => `the file ends after ${f} of ${plural(faceCount, 'face')}`,
+      progress,
+    );
   } catch (error) {
     if (!(error instanceof ParseError) || firstSpan === undefined) throw error;
     throw new ParseError('off', error.location, `${error.reason} (note: ${firstSpan}; if it should not, it lists too few numbers)`);

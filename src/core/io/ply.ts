@@ -41,7 +41,7 @@ import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes } from '.
 import { GrowableArray } from './growable.js';
 import { type Encoding, type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
 import { quoted, someOf } from './names.js';
-import { PlainLines, TextScanner } from './text.js';
+import { type PlainLines, TextScanner } from './text.js';
 
 /**
  * Every PLY type name, old (`uchar`) and new (`uint8`), and the type of the values it holds. A Map,
@@ -527,27 +527,19 @@ function planAttributes(
 
 function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progress: Progress): void {
   const scanner = new TextScanner(bytes, 'ply', { start: header.bodyStart, line: header.bodyLine });
-  const batch = new PlainLines();
   for (const { element, properties } of plan.elements) {
     const { name, count: rows } = element;
     if (properties.length === 0) continue;
+    // the fast lane takes rows of plain numbers whole when they fit their properties; any other
+    // row, and every row of another layout, is read token by token
     const layout = fastLayout(properties);
-    for (let row = 0, reportAt = 0; row < rows; ) {
-      if (!scanner.skipBlankLines()) scanner.fail(`the file ends after ${row} of ${rows} rows of element '${name}'`);
-      if (row >= reportAt) {
-        progress(scanner.pos / bytes.length);
-        reportAt = row + PROGRESS_ROWS;
-      }
-      // the fast lane: rows of plain numbers, a batch at a time, each stored whole when it fits
-      // its properties; the first row that is not plain or does not fit is read token by token,
-      // which also says what is wrong with it (and so is every row of another layout)
-      const lines = layout === null ? 0 : scanner.plainLines(batch, rows - row);
-      const r = layout === null ? 0 : storeRows(layout, properties, batch, lines, row, bytes.length - scanner.pos);
-      row += r;
-      if (r > 0 && r === lines) continue;
-      if (r < lines) scanner.backTo(batch, r);
-      readRowByTokens(scanner, element, properties, row++);
-    }
+    scanner.readRows(
+      rows,
+      layout && ((batch, lines, row, bytesLeft) => storeRows(layout, properties, batch, lines, row, bytesLeft)),
+      (row) => readRowByTokens(scanner, element, properties, row),
+      (row) => `the file ends after ${row} of ${rows} rows of element '${name}'`,
+      progress,
+    );
   }
   if (scanner.skipBlankLines()) plan.notes.push(`ignored the text after the last element (from line ${scanner.line})`);
 }

@@ -24,6 +24,7 @@
  *   const x = scanner.number();
  */
 import { ParseError } from '../errors.js';
+import { type Progress, PROGRESS_ROWS } from './mesh-file.js';
 
 const TAB = 9;
 const LF = 10;
@@ -61,6 +62,13 @@ const MAX_COMMENTS = 1000;
 const PLAIN_LINE_NUMBERS = 64;
 /** Lines of the fast lane start with their first number. */
 const NO_KEYWORD = -1;
+
+/**
+ * Stores the first rows of a batch of `lines` plain lines (the first being row `row`, `bytesLeft`
+ * bytes of the file after them) for as long as each is what a row holds, as reading it token by
+ * token would find it; returns how many it stored (see `TextScanner.readRows`).
+ */
+export type StoreRows = (batch: PlainLines, lines: number, row: number, bytesLeft: number) => number;
 
 /** Lines of plain numbers read ahead by `TextScanner.plainLines`, in arrays kept for batch after batch. */
 export class PlainLines {
@@ -227,6 +235,31 @@ export class TextScanner {
     return lines;
   }
 
+  /**
+   * Reads the `rows` rows of one element, each on a line of its own (a row read by tokens may go
+   * on over more). The fast lane reads a batch of plain lines at a time, of which `store` stores
+   * what it can and says how many rows that was; the first row it leaves, `readRow` reads token by
+   * token, which also says what is wrong with it. Without `store`, every row goes by tokens.
+   * `endsEarly(row)` words the error when the file ends before row `row`; `progress` hears of
+   * the reading every `PROGRESS_ROWS` rows or so.
+   */
+  readRows(rows: number, store: StoreRows | null, readRow: (row: number) => void, endsEarly: (row: number) => string, progress: Progress): void {
+    const batch = new PlainLines();
+    for (let row = 0, reportAt = 0; row < rows; ) {
+      if (!this.skipBlankLines()) this.fail(endsEarly(row));
+      if (row >= reportAt) {
+        progress(this.pos / this.bytes.length);
+        reportAt = row + PROGRESS_ROWS;
+      }
+      const lines = store === null ? 0 : this.plainLines(batch, rows - row);
+      const r = lines === 0 ? 0 : store!(batch, lines, row, this.bytes.length - this.pos);
+      row += r;
+      if (r > 0 && r === lines) continue;
+      if (r < lines) this.backTo(batch, r);
+      readRow(row++);
+    }
+  }
+
   /** Moves the cursor back to the start of line `r` of the last `plainLines` batch. */
   backTo(batch: PlainLines, r: number): void {
     this.pos = batch.starts[r];
@@ -252,7 +285,7 @@ export class TextScanner {
       value = value * 10 + (c - ZERO);
       c = bytes[++i];
     }
-    if (i === digitsStart || !(this.isDelimiter(c) || (slashEnds && c === SLASH))) {
+    if (i === digitsStart || !(isDelimiter(c, this.hashComments) || (slashEnds && c === SLASH))) {
       const token = this.token(start);
       this.fail(`expected a whole number, found ${token ? `'${token}'` : 'the end of the line'}`, start);
     }
@@ -288,15 +321,17 @@ export class TextScanner {
     this.fail(`expected a number, found '${token}'${special}`, start);
   }
 
-  private isDelimiter(c: number | undefined): boolean {
-    return c === undefined || c <= SPACE || (c === HASH && this.hashComments);
-  }
 
   private newLineAt(lineFeed: number): void {
     this.pos = lineFeed + 1;
     this.line++;
     this.lineStart = this.pos;
   }
+}
+
+/** Whether byte `c` ends a token: a space or control byte, the file's end or, with `hashComments`, a `#`. */
+function isDelimiter(c: number | undefined, hashComments: boolean): boolean {
+  return c === undefined || c <= SPACE || (c === HASH && hashComments);
 }
 
 /** What `scanNumber` found last; `value` is NaN when the number is beyond the range of a double. */
@@ -340,7 +375,7 @@ function scanNumber(bytes: Uint8Array, i: number, hashComments: boolean): number
     exponent += scanned.exponent;
     c = bytes[i];
   }
-  if (!(c === undefined || c <= SPACE || (c === HASH && hashComments))) return -1;
+  if (!isDelimiter(c, hashComments)) return -1;
   scanned.integral = integral;
   if (mantissa < EXACT_INTEGER_LIMIT && exponent >= -22 && exponent <= 22) {
     const value = exponent < 0 ? mantissa / EXACT_POWERS_OF_TEN[-exponent] : mantissa * EXACT_POWERS_OF_TEN[exponent];
