@@ -551,10 +551,9 @@ function fastLayout(properties: PropertyPlan[]): 'scalars' | 'list' | null {
 }
 
 /**
- * The fast lane's part: stores the rows of a batch (the first being row `firstRow`, `bytesLeft`
- * bytes of the file after it) for as long as each is what its properties say, as reading it token
- * by token would find it; returns how many it stored. Rows of scalars alone (vertices) are stored a column at a time; rows of one list (faces)
- * are a count, then that many items (vertex indices: whole numbers in range).
+ * The fast lane's part (a `StoreRows` for `layout`): stores the rows of a batch for as long as each
+ * is what its properties say. Rows of scalars alone (vertices) are stored a column at a time; rows
+ * of one list (faces) are a count, then that many items (vertex indices: whole numbers in range).
  */
 function storeRows(
   layout: 'scalars' | 'list',
@@ -577,7 +576,6 @@ function storeRows(
     return rows;
   }
   const list = properties[0].list!;
-  if (lines === 0) return 0;
   const { min, max, holdsIndices, starts } = list;
   // each line is a count, then its items; after the batch, an item takes at least two bytes
   const items = list.reserve(ends[lines - 1] - lines, firstRow + lines - 1, ends[lines - 1] - lines + bytesLeft / 2);
