@@ -93,7 +93,7 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   progress(0.7);
 
   // 6. one fan per vertex
-  splitFans(mesh, report, span(0.7, 0.9));
+  splitFans(mesh, report, kept.starts[kept.faceCount], span(0.7, 0.9));
   progress(0.9);
 
   // 7. link the boundary loops
@@ -599,7 +599,6 @@ function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number, entries: Int32
   mesh.edgeSlots = nE;
   mesh.faceSlots = nF;
   const { heNext, hePrev, heVertex, heFace, fHalfedge } = mesh;
-  if (unpaired > 0) heFace.fill(-1);
   let edges = 0;
   for (let f = 0; f < nF; f++) {
     if ((f & TICK) === 0) tick(f, nF);
@@ -612,6 +611,11 @@ function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number, entries: Int32
       // d > c or none: c comes first on its edge and opens it; d < c: d opened it, and twin[d]
       // already holds d's halfedge
       const h = d < c && d >= 0 ? twin[d] ^ 1 : 2 * edges++;
+      if (d === -1) {
+        // the other halfedge of the edge is on the boundary: no face, and no next until phase 7
+        heFace[h ^ 1] = -1;
+        heNext[h ^ 1] = -1;
+      }
       twin[c] = h;
       heVertex[h] = corners[c];
       heFace[h] = f;
@@ -659,7 +663,8 @@ function copyAttributes(soup: PolygonSoup, kept: KeptFaces, mesh: HalfedgeMesh, 
  * exactly one fan. Sets each vertex's halfedge (its outgoing boundary halfedge on an open fan) and
  * the origin of each boundary halfedge.
  */
-function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, tick: Tick = () => {}): void {
+function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, faceHalfedges: number, tick: Tick = () => {}): void {
+  if (walkSingleFans(mesh, faceHalfedges)) return;
   const { heNext, hePrev, heVertex, heFace } = mesh;
   const nH = mesh.halfedgeSlots;
   mesh.vHalfedge.fill(-1);
@@ -721,6 +726,45 @@ function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, tick: Tick = () =>
       vertices: [v, ...list],
     });
   }
+}
+
+/**
+ * The common case of phase 6: no vertex has a second fan, so none is split. Walks the fan of each
+ * vertex from the first halfedge leaving it, as `splitFans` does, but the fans of vertices met
+ * before are skipped without a mark per halfedge. Fans never share a halfedge, so the walks cover
+ * all `faceHalfedges` exactly when every vertex has one fan; otherwise returns false, and
+ * `splitFans` starts again. One array read a step, where `splitFans` reads three: the boundary
+ * halfedges have a next of -1 (see `linkFaces`).
+ */
+function walkSingleFans(mesh: HalfedgeMesh, faceHalfedges: number): boolean {
+  const { heNext, hePrev, heVertex, vHalfedge } = mesh;
+  const nH = mesh.halfedgeSlots;
+  vHalfedge.fill(-1);
+  let walked = 0;
+  for (let h = 0; h < nH; h++) {
+    const v = heVertex[h];
+    if (vHalfedge[v] !== -1 || heNext[h] === -1) continue;
+    // clockwise (next of twin) from h, until the fan closes or meets the boundary
+    let n = heNext[h ^ 1];
+    walked++;
+    while (n !== h && n !== -1) {
+      if (++walked > faceHalfedges) return false;
+      n = heNext[n ^ 1];
+    }
+    if (n === h) {
+      vHalfedge[v] = heNext[h ^ 1];
+      continue;
+    }
+    // open: counter-clockwise (twin of prev) from h to the boundary halfedge leaving v
+    let out = hePrev[h] ^ 1;
+    while (heNext[out] !== -1) {
+      if (++walked > faceHalfedges) return false;
+      out = hePrev[out] ^ 1;
+    }
+    heVertex[out] = v;
+    vHalfedge[v] = out;
+  }
+  return walked === faceHalfedges;
 }
 
 /**
