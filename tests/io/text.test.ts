@@ -37,6 +37,57 @@ describe('the number scanner', () => {
     );
   });
 
+  it(`reads numbers of 16 to 19 digits, in every form, to the nearest double, as the engine does (seed ${SEED})`, () => {
+    const digits = fc.bigInt({ min: 10n ** 15n, max: 10n ** 19n - 1n }).map(String);
+    const written = fc.oneof(
+      // a point placed among the digits, or before them after some zeros
+      fc.tuple(digits, fc.integer({ min: 0, max: 19 }), fc.integer({ min: 0, max: 8 })).map(([d, point, zeros]) =>
+        point === 0 ? `0.${'0'.repeat(zeros)}${d}` : `${d.slice(0, point)}.${d.slice(point)}`,
+      ),
+      // scientific notation, as the engine writes small and large doubles
+      fc.tuple(digits, fc.integer({ min: -30, max: 30 })).map(([d, e]) => `${d[0]}.${d.slice(1)}e${e}`),
+      // doubles printed with 16 to 19 digits
+      fc.tuple(fc.double({ min: 1e-12, max: 1e6, noNaN: true }), fc.integer({ min: 16, max: 19 })).map(([x, p]) => x.toPrecision(p)),
+    );
+    fc.assert(
+      fc.property(written, fc.boolean(), (source, negative) => {
+        const signed = negative ? `-${source}` : source;
+        return Object.is(numbersOf(signed)[0], Number(signed));
+      }),
+      { seed: SEED, numRuns: 100000 },
+    );
+  });
+
+  it(`rounds 19-digit numbers just either side of the midpoint of two doubles as the engine does (seed ${SEED})`, () => {
+    /** The first 19 digits of the midpoint between x and the next double up, and those plus one. */
+    const nearMidpoint = (x: number): [string, string] => {
+      const view = new DataView(new ArrayBuffer(8));
+      view.setFloat64(0, x);
+      const bits = view.getBigUint64(0);
+      const shift = Number((bits >> 52n) & 0x7ffn) - 1075; // x = significand · 2^shift, shift < 0 here
+      const significand = (bits & ((1n << 52n) - 1n)) | (1n << 52n);
+      const scale = 1 - shift; // midpoint · 10^scale = (2 · significand + 1) · 5^scale · 2^(scale - 1 + shift)
+      const digits = ((2n * significand + 1n) * 10n ** BigInt(scale)) >> BigInt(1 - shift);
+      const text = digits.toString();
+      const first = BigInt(text.slice(0, 19));
+      const exponent = text.length - 19 - scale;
+      return [`${first}e${exponent}`, `${first + 1n}e${exponent}`];
+    };
+    fc.assert(
+      fc.property(fc.double({ min: 1e-3, max: 1e3, noNaN: true }), (x) =>
+        nearMidpoint(x).every((source) => Object.is(numbersOf(source)[0], Number(source))),
+      ),
+      { seed: SEED, numRuns: 20000 },
+    );
+    // exactly halfway between two doubles, which only numbers of 2^32 and over can be with 22
+    // decimals or fewer: the tie goes to the even one
+    const ties = ['4503599627370497.5', '4503599627370498.5', '-9007199254740993.0', '9007199254740995.00', '18014398509481986.0'];
+    expect(ties.map((source) => numbersOf(source)[0])).toEqual(ties.map(Number));
+    // just below a power of two, where the double beneath is only half as far as the one above
+    const belowPowers = ['0.49999999999999997', '0.499999999999999972', '0.99999999999999994', '0.999999999999999944', '1.9999999999999999'];
+    expect(belowPowers.map((source) => numbersOf(source)[0])).toEqual(belowPowers.map(Number));
+  });
+
   it('says whether a number was written as an integer', () => {
     const scanner = new TextScanner(text('255 1.0 1e2'), 'test');
     const integral = [0, 1, 2].map(() => (scanner.number(), scanner.integral));

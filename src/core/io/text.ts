@@ -8,8 +8,10 @@
  * "line 12, column 5". Numbers are read straight from the digits: the mantissa is gathered as an
  * integer and scaled by one exact power of ten, which rounds correctly when the mantissa is below
  * 2^53 (every 15-digit number, most 16-digit ones) and the exponent at most 22 either way — the
- * usual case, "0.123456" or "-1.5e-3". Anything else falls back to the engine's own parser on that
- * one token, so every value is read exactly.
+ * usual case, "0.123456" or "-1.5e-3". Numbers of up to 19 digits scaled down by at most 10^22, as
+ * a double's shortest round trip is written ("0.12345678901234567"), are rounded exactly with a
+ * remainder in two doubles (`longNumberValue`). Anything else falls back to the engine's own parser
+ * on that one token, so every value is read exactly.
  *
  * Most lines of most files are nothing but numbers: `plainLines` reads those a batch of lines at a
  * time, in a loop that builds no string and calls nothing per token, and stops at the first other
@@ -381,9 +383,99 @@ function scanNumber(bytes: Uint8Array, i: number, hashComments: boolean): number
     const value = exponent < 0 ? mantissa / EXACT_POWERS_OF_TEN[-exponent] : mantissa * EXACT_POWERS_OF_TEN[exponent];
     scanned.value = negative ? -value : value;
   } else {
-    scanned.value = engineValue(bytes, start, i);
+    scanned.value = longNumberValue(bytes, start, i);
   }
   return i;
+}
+
+/** Splits a double into two halves of 26 bits each (Dekker), for `productError`. */
+const SPLITTER = 134217729; // 2^27 + 1
+/** The double `ulpOf` reads the bits of. */
+const ULP_BITS = new Float64Array(1);
+const ULP_WORDS = new Uint32Array(ULP_BITS.buffer);
+/** Which of the two words of a double holds its sign and exponent (1 on little-endian machines). */
+const HIGH_WORD = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1 ? 1 : 0;
+
+/**
+ * A number the short path cannot round, written from `start` to `end`. Numbers of 16 to 19
+ * significant digits scaled down by at most 10^22 (how the shortest round trip of a double is
+ * written: 17 digits) are rounded here, exactly: the digits as a sum of two doubles, the quotient
+ * corrected once by its remainder, and accepted only when that remainder shows it is the nearest
+ * double by a clear margin. Every other number, and any near-tie, goes to the engine's parser.
+ * It reads the digits again, so that `scanNumber` passes no more than it did to the engine.
+ */
+function longNumberValue(bytes: Uint8Array, start: number, end: number): number {
+  // the significant digits as high · scale + low: high holds the first 15 (below 2^53), low the rest
+  let high = 0;
+  let low = 0;
+  let scale = 1;
+  let digits = 0;
+  let exponent = 0;
+  let point = false;
+  for (let i = start; i < end; i++) {
+    const c = bytes[i];
+    if (c === LOWER_E || c === UPPER_E) {
+      scanExponent(bytes, i + 1);
+      exponent += scanned.exponent;
+      break;
+    }
+    if (c === DOT) point = true;
+    if (c < ZERO || c > NINE) continue; // sign, point
+    if (point) exponent--;
+    if (digits === 0 && c === ZERO) continue; // leading zeros
+    if (digits < 15) high = high * 10 + (c - ZERO);
+    else {
+      low = low * 10 + (c - ZERO);
+      scale *= 10;
+    }
+    digits++;
+  }
+  if (digits > 19 || exponent >= 0 || exponent < -22) return engineValue(bytes, start, end);
+  // the digits exactly, as sum + rest: high · scale rounds to product (error productError), then
+  // adding low rounds to sum (error by Knuth's two-sum); both errors are whole numbers below 2^11
+  const product = high * scale;
+  const sum = product + low;
+  const bv = sum - product;
+  const rest = product - (sum - bv) + (low - bv) + productError(high, scale, product);
+  const divisor = EXACT_POWERS_OF_TEN[-exponent];
+  // sum / divisor is within an ulp or so of the quotient; one step by the remainder brings it within
+  // half an ulp, and the remainder after that step says by how much
+  let quotient = sum / divisor;
+  quotient += remainder(sum, rest, quotient, divisor) / divisor;
+  const left = remainder(sum, rest, quotient, divisor);
+  const half = (divisor * ulpOf(quotient)) / 2;
+  if (!(Math.abs(left) < half * (1 - 2 ** -30)) || isPowerOfTwo(quotient)) return engineValue(bytes, start, end);
+  return bytes[start] === MINUS ? -quotient : quotient;
+}
+
+/** (sum + rest) − quotient · divisor, where quotient · divisor is near sum (so `sum − product` is exact). */
+function remainder(sum: number, rest: number, quotient: number, divisor: number): number {
+  const product = quotient * divisor;
+  return sum - product - productError(quotient, divisor, product) + rest;
+}
+
+/** x · y − product exactly, for product = x · y rounded (Dekker's two-product without a fused multiply-add). */
+function productError(x: number, y: number, product: number): number {
+  const xs = SPLITTER * x;
+  const xHigh = xs - (xs - x);
+  const xLow = x - xHigh;
+  const ys = SPLITTER * y;
+  const yHigh = ys - (ys - y);
+  const yLow = y - yHigh;
+  return xHigh * yHigh - product + xHigh * yLow + xLow * yHigh + xLow * yLow;
+}
+
+/** The gap between a positive normal double and the next one up. */
+function ulpOf(x: number): number {
+  ULP_BITS[0] = x;
+  const biased = ULP_WORDS[HIGH_WORD] >>> 20; // exponent bits (x is positive)
+  return 2 ** (biased - 1075);
+}
+
+/** Whether a positive double is a power of two: below one, the double beneath it is only half an ulp away. */
+function isPowerOfTwo(x: number): boolean {
+  ULP_BITS[0] = x;
+  return (ULP_WORDS[HIGH_WORD] & 0xfffff) === 0 && ULP_WORDS[1 - HIGH_WORD] === 0;
 }
 
 /**
