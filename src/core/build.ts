@@ -92,12 +92,13 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   copyOf.forEach((v, i) => mesh.vertexAttributes.copy(nInputVertices + i, v));
   progress(0.7);
 
-  // 6. one fan per vertex
-  splitFans(mesh, report, kept.starts[kept.faceCount], span(0.7, 0.9));
+  // 6. one fan per vertex: the common case needs no split, and a walk that only checks so
+  const faceHalfedges = kept.starts[kept.faceCount];
+  if (!walkSingleFans(mesh, faceHalfedges)) splitFans(mesh, report, span(0.7, 0.9));
   progress(0.9);
 
   // 7. link the boundary loops
-  if (mesh.halfedgeSlots > kept.starts[kept.faceCount]) linkBoundaries(mesh);
+  if (mesh.halfedgeSlots > faceHalfedges) linkBoundaries(mesh);
   reportVertices(mesh, nInputVertices, report);
   progress(1);
 
@@ -663,8 +664,7 @@ function copyAttributes(soup: PolygonSoup, kept: KeptFaces, mesh: HalfedgeMesh, 
  * exactly one fan. Sets each vertex's halfedge (its outgoing boundary halfedge on an open fan) and
  * the origin of each boundary halfedge.
  */
-function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, faceHalfedges: number, tick: Tick = () => {}): void {
-  if (walkSingleFans(mesh, faceHalfedges)) return;
+function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, tick: Tick = () => {}): void {
   const { heNext, hePrev, heVertex, heFace } = mesh;
   const nH = mesh.halfedgeSlots;
   mesh.vHalfedge.fill(-1);
@@ -733,7 +733,7 @@ function splitFans(mesh: HalfedgeMesh, report: ReportBuilder, faceHalfedges: num
  * vertex from the first halfedge leaving it, as `splitFans` does, but the fans of vertices met
  * before are skipped without a mark per halfedge. Fans never share a halfedge, so the walks cover
  * all `faceHalfedges` exactly when every vertex has one fan; otherwise returns false, and
- * `splitFans` starts again. One array read a step, where `splitFans` reads three: the boundary
+ * `splitFans` must set everything again. One array read a step, where `splitFans` reads three: the boundary
  * halfedges have a next of -1 (see `linkFaces`).
  */
 function walkSingleFans(mesh: HalfedgeMesh, faceHalfedges: number): boolean {

@@ -390,6 +390,11 @@ function scanNumber(bytes: Uint8Array, i: number, hashComments: boolean): number
 
 /** Splits a double into two halves of 26 bits each (Dekker), for `productError`. */
 const SPLITTER = 134217729; // 2^27 + 1
+/**
+ * How far inside half an ulp a remainder must be for `longNumberValue` to trust its quotient: far
+ * more than the remainder's own rounding error (about 2^-50 of half an ulp).
+ */
+const TIE_MARGIN = 1 - 2 ** -30;
 /** The double `ulpOf` reads the bits of. */
 const ULP_BITS = new Float64Array(1);
 const ULP_WORDS = new Uint32Array(ULP_BITS.buffer);
@@ -431,12 +436,11 @@ function longNumberValue(bytes: Uint8Array, start: number, end: number): number 
     digits++;
   }
   if (digits > 19 || exponent >= 0 || exponent < -22) return engineValue(bytes, start, end);
-  // the digits exactly, as sum + rest: high · scale rounds to product (error productError), then
-  // adding low rounds to sum (error by Knuth's two-sum); both errors are whole numbers below 2^11
+  // the digits exactly, as sum + rest: high · scale rounds to product, then adding low rounds to
+  // sum; both rounding errors are whole numbers below 2^11, so their sum is exact
   const product = high * scale;
   const sum = product + low;
-  const bv = sum - product;
-  const rest = product - (sum - bv) + (low - bv) + productError(high, scale, product);
+  const rest = sumError(product, low, sum) + productError(high, scale, product);
   const divisor = EXACT_POWERS_OF_TEN[-exponent];
   // sum / divisor is within an ulp or so of the quotient; one step by the remainder brings it within
   // half an ulp, and the remainder after that step says by how much
@@ -444,7 +448,7 @@ function longNumberValue(bytes: Uint8Array, start: number, end: number): number 
   quotient += remainder(sum, rest, quotient, divisor) / divisor;
   const left = remainder(sum, rest, quotient, divisor);
   const half = (divisor * ulpOf(quotient)) / 2;
-  if (!(Math.abs(left) < half * (1 - 2 ** -30)) || isPowerOfTwo(quotient)) return engineValue(bytes, start, end);
+  if (!(Math.abs(left) < half * TIE_MARGIN) || isPowerOfTwo(quotient)) return engineValue(bytes, start, end);
   return bytes[start] === MINUS ? -quotient : quotient;
 }
 
@@ -452,6 +456,12 @@ function longNumberValue(bytes: Uint8Array, start: number, end: number): number 
 function remainder(sum: number, rest: number, quotient: number, divisor: number): number {
   const product = quotient * divisor;
   return sum - product - productError(quotient, divisor, product) + rest;
+}
+
+/** x + y − sum exactly, for sum = x + y rounded (Knuth's two-sum). */
+function sumError(x: number, y: number, sum: number): number {
+  const yRounded = sum - x;
+  return x - (sum - yRounded) + (y - yRounded);
 }
 
 /** x · y − product exactly, for product = x · y rounded (Dekker's two-product without a fused multiply-add). */
