@@ -9,6 +9,7 @@ import {
   makePly,
   parseError,
   type PlyElementSpec,
+  type PlyEncoding,
   plyEncodings,
   read,
   text,
@@ -221,6 +222,77 @@ describe('PLY text, the fast lane against token by token', () => {
       }),
       { seed: SEED, numRuns: 3000 },
     );
+  });
+});
+
+describe('PLY binary faces, runs of triangles and quads against row by row', () => {
+  const SEED = 20261126;
+  const VERTICES = 6;
+  const index = fc.oneof(
+    { weight: 12, arbitrary: fc.integer({ min: 0, max: VERTICES - 1 }) },
+    { weight: 1, arbitrary: fc.constantFrom(-1, VERTICES, 0x7fffffff, -0x80000000) },
+  );
+  // mostly triangles and quads, in runs, with now and then another length in between
+  const face = fc.oneof(
+    { weight: 6, arbitrary: fc.array(index, { minLength: 3, maxLength: 3 }) },
+    { weight: 6, arbitrary: fc.array(index, { minLength: 4, maxLength: 4 }) },
+    { weight: 1, arbitrary: fc.array(index, { minLength: 0, maxLength: 7 }) },
+  );
+  const file = fc.record({
+    faces: fc.array(face, { maxLength: 40 }),
+    encoding: fc.constantFrom('binary_little_endian', 'binary_big_endian' as const),
+    type: fc.constantFrom('int', 'uint'),
+  });
+
+  /** Cells of six vertices; `padded` puts a scalar after each face's list, which sends every row through the general loop. */
+  const ply = ({ faces, encoding, type }: { faces: number[][]; encoding: PlyEncoding; type: string }, padded: boolean) =>
+    makePly(encoding, [
+      { ...square, rows: Array.from({ length: VERTICES }, (_, i) => [i, i % 2, 0]) },
+      {
+        name: 'face',
+        props: [{ name: 'vertex_indices', type, count: 'uchar' }, ...(padded ? [{ name: 'flag', type: 'uchar' }] : [])],
+        // a uint column holds what an int one does, bit for bit (-1 as 0xffffffff)
+        rows: faces.map((ids) => [type === 'uint' ? ids.map((i) => i >>> 0) : ids, ...(padded ? [7] : [])]),
+      },
+    ]);
+
+  /** The faces read, or the error's reason. */
+  const outcome = (bytes: Uint8Array) => {
+    try {
+      return { faces: faceLists(read(bytes).soup) };
+    } catch (error) {
+      if (!(error instanceof ParseError)) throw error;
+      return { reason: error.reason };
+    }
+  };
+
+  it(`reads every face, or fails at the same face for the same reason, as the row by row loop (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(file, (spec) => {
+        expect(outcome(ply(spec, false))).toEqual(outcome(ply(spec, true)));
+      }),
+      { seed: SEED, numRuns: 2000 },
+    );
+  });
+
+  it('reads 70,000 faces, triangles then quads then both by turns, as row by row (progress and growth)', () => {
+    const faces = Array.from({ length: 70000 }, (_, f) => {
+      const quad = f >= 30000 && (f < 50000 || f % 3 === 0);
+      return quad ? [f % 6, (f + 1) % 6, (f + 2) % 6, (f + 3) % 6] : [f % 6, (f + 2) % 6, (f + 4) % 6];
+    });
+    for (const encoding of ['binary_little_endian', 'binary_big_endian'] as const) {
+      const fractions: number[] = [];
+      const soup = readMesh(ply({ faces, encoding, type: 'int' }, false), { onProgress: (x) => fractions.push(x) }).soup;
+      expect(faceLists(soup)).toEqual(faceLists(read(ply({ faces, encoding, type: 'int' }, true)).soup));
+      expect(soup.faceStarts[70000]).toBe(30000 * 3 + 20000 * 4 + 6667 * 4 + 13333 * 3);
+      expect(fractions.length).toBeGreaterThan(3);
+    }
+    // the file cut inside a run of quads: the row it ends in, and where that row starts
+    const bytes = ply({ faces, encoding: 'binary_little_endian', type: 'int' }, false);
+    const rowStart = new TextDecoder().decode(bytes.subarray(0, 400)).indexOf('end_header\n') + 11 + 12 * 6 + 13 * 30000 + 17 * 10000;
+    const cut = parseError(() => read(bytes.subarray(0, rowStart + 5)));
+    expect(cut.reason).toBe("the file ends inside row 40000 of 70000 of element 'face', whose list 'vertex_indices' announces 4 items");
+    expect(cut.location).toEqual({ byteOffset: rowStart });
   });
 });
 

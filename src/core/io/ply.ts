@@ -670,7 +670,9 @@ function readBinaryBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progre
       offset += rows * rowBytes;
       continue;
     }
-    offset = readRowsWithLists(bytes, reader, offset, element, properties, progress);
+    offset = isIndexList(properties)
+      ? readIndexListRows(bytes, reader, offset, element, properties[0], progress)
+      : readRowsWithLists(bytes, reader, offset, element, properties, progress);
   }
   if (offset < end) plan.notes.push(`ignored ${plural(end - offset, 'byte')} after the last element`);
 }
@@ -738,6 +740,110 @@ function readRowsWithLists(
     }
   }
   return offset;
+}
+
+/** An element whose rows are one list of 32-bit vertex indices counted in a uchar: the faces of almost every binary PLY. */
+function isIndexList(properties: PropertyPlan[]): boolean {
+  if (properties.length !== 1) return false;
+  const { property, countIsByte, list } = properties[0];
+  return countIsByte && list !== null && list.holdsIndices && property.type.size === 4 && property.type.type !== 'float32';
+}
+
+/**
+ * `readRowsWithLists` for an element that `isIndexList` accepts. Runs of triangles or quads are
+ * read at fixed offsets (`readPolygonRun`); any other row, and the row a run stops at, is read
+ * here on its own. A 1.31M-triangle file's faces take about a third of the general loop's time.
+ */
+function readIndexListRows(
+  bytes: Uint8Array,
+  reader: BinaryReader,
+  offset: number,
+  element: PlyElement,
+  p: PropertyPlan,
+  progress: Progress,
+): number {
+  const { view, littleEndian } = reader;
+  const end = bytes.length;
+  const { name, count: rows } = element;
+  const list = p.list!;
+  const { starts, min, max } = list;
+  const signed = p.property.type.type === 'int32';
+  // runs read int32s, the same numbers as uint32s where they are not negative; a list that may
+  // hold -1 (strips) is read in runs only when it is signed, so that 0xffffffff is never taken for it
+  const inRuns = signed || min >= 0;
+  let n = list.items.length;
+  for (let row = 0; row < rows; ) {
+    const k = bytes[offset];
+    const ranTo =
+      inRuns && (k === 3 || k === 4)
+        ? readPolygonRun(bytes, view, littleEndian, offset, row, Math.min(rows, (row | PROGRESS_ROWS) + 1), k, list, n)
+        : row;
+    if (ranTo > row) {
+      offset += (ranTo - row) * (1 + 4 * k);
+      n = starts[ranTo];
+      row = ranTo;
+    } else {
+      if (offset >= end) reader.fail(`the file ends inside row ${row} of ${rows} of element '${name}'`, offset);
+      const count = bytes[offset++];
+      if (offset + 4 * count > end) {
+        reader.fail(
+          `the file ends inside row ${row} of ${rows} of element '${name}', whose list '${p.property.name}' ` +
+            `announces ${count} items`,
+          offset - 1,
+        );
+      }
+      list.items.length = n;
+      const items = list.reserve(count, row, (end - offset) / 4);
+      for (let i = 0; i < count; i++, offset += 4) {
+        const value = signed ? view.getInt32(offset, littleEndian) : view.getUint32(offset, littleEndian);
+        if (value < min || value > max) reader.fail(outOfRange(element, row, value, list), offset);
+        items[n++] = value;
+      }
+      starts[++row] = n;
+    }
+    if ((row & PROGRESS_ROWS) === 0) progress(offset / end);
+  }
+  list.items.length = n;
+  return offset;
+}
+
+/**
+ * Reads the rows from `row` on that hold `k` = 3 or 4 indices (triangles, quads), at fixed offsets
+ * from byte `offset`, writing the list's items from `n` on; stops before `stop`, a row of another
+ * length, an index out of range, the end of the file or of the items' array. Returns the row it
+ * stopped at, which the caller reads on its own (growing the array, or reporting what is wrong).
+ */
+function readPolygonRun(
+  bytes: Uint8Array,
+  view: DataView,
+  littleEndian: boolean,
+  offset: number,
+  row: number,
+  stop: number,
+  k: number,
+  list: ListCollector,
+  n: number,
+): number {
+  const { starts, min, max } = list;
+  const items = list.items.data;
+  const quad = k === 4;
+  const stride = 1 + 4 * k;
+  const end = bytes.length;
+  for (; row < stop; row++, offset += stride) {
+    if (bytes[offset] !== k || offset + stride > end || n + k > items.length) break;
+    const a = view.getInt32(offset + 1, littleEndian);
+    const b = view.getInt32(offset + 5, littleEndian);
+    const c = view.getInt32(offset + 9, littleEndian);
+    const d = quad ? view.getInt32(offset + 13, littleEndian) : min;
+    if (a < min || a > max || b < min || b > max || c < min || c > max || d < min || d > max) break;
+    items[n] = a;
+    items[n + 1] = b;
+    items[n + 2] = c;
+    if (quad) items[n + 3] = d;
+    n += k;
+    starts[row + 1] = n;
+  }
+  return row;
 }
 
 function listEndsEarly(element: PlyElement, row: number, p: PropertyPlan, count: number, found: number): string {
