@@ -10,6 +10,11 @@ import { decodeViewState } from './share.js';
 
 const params = new URLSearchParams(location.search);
 const embed = parsePanels(params.get('panels'));
+// yield once before making the view, whose first task is long (a WebGL context and its first
+// shaders: half a second in software rendering), so that the browser finishes loading the page
+// first: in two sets of 20 first loads, the sample was drawn after a median of 0.87 and 0.94 s,
+// against 1.07 and 1.08 s without
+await new Promise((resolve) => setTimeout(resolve));
 const app = new App(pageHost(params.has('embed') ? embed.panels : null));
 window.halfedgeLab = automation(app);
 
