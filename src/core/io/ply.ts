@@ -742,7 +742,7 @@ function readRowsWithLists(
   return offset;
 }
 
-/** An element whose rows are one list of 32-bit vertex indices counted in a uchar: the faces of almost every binary PLY. */
+/** Rows that are one list of 32-bit vertex indices counted in a uchar: the faces of almost every binary PLY. */
 function isIndexList(properties: PropertyPlan[]): boolean {
   if (properties.length !== 1) return false;
   const { property, countIsByte, list } = properties[0];
@@ -752,7 +752,8 @@ function isIndexList(properties: PropertyPlan[]): boolean {
 /**
  * `readRowsWithLists` for an element that `isIndexList` accepts. Runs of triangles or quads are
  * read at fixed offsets (`readPolygonRun`); any other row, and the row a run stops at, is read
- * here on its own. A 1.31M-triangle file's faces take about a third of the general loop's time.
+ * here on its own. A 1.31M-triangle file parses in about half the time it took with the general
+ * loop (28–30 ms against 54–67).
  */
 function readIndexListRows(
   bytes: Uint8Array,
