@@ -32,11 +32,13 @@ const DIGIT_BITS = 15;
 export function spatialOrder(mesh: HalfedgeMesh): CompactionMaps {
   const vertices = vertexOrder(mesh);
   const { heVertex, eDeleted, fHalfedge, fDeleted } = mesh;
-  const edges = stableRanks(mesh.edgeSlots, mesh.nVertices, (e) =>
-    eDeleted[e] ? -1 : Math.min(vertices[heVertex[2 * e]], vertices[heVertex[2 * e + 1]]),
-  );
-  const faces = stableRanks(mesh.faceSlots, mesh.nVertices, (f) => (fDeleted[f] ? -1 : vertices[heVertex[fHalfedge[f]]]));
-  const maps = { vertices, edges, faces };
+  const edgeKeys = new Int32Array(mesh.edgeSlots);
+  for (let e = 0; e < edgeKeys.length; e++) {
+    edgeKeys[e] = eDeleted[e] ? -1 : Math.min(vertices[heVertex[2 * e]], vertices[heVertex[2 * e + 1]]);
+  }
+  const faceKeys = new Int32Array(mesh.faceSlots);
+  for (let f = 0; f < faceKeys.length; f++) faceKeys[f] = fDeleted[f] ? -1 : vertices[heVertex[fHalfedge[f]]];
+  const maps = { vertices, edges: stableRanks(edgeKeys, mesh.nVertices), faces: stableRanks(faceKeys, mesh.nVertices) };
   mesh.renumber(maps);
   return maps;
 }
@@ -70,10 +72,14 @@ function vertexOrder(mesh: HalfedgeMesh): Int32Array {
       (spreadBits(cell((p[3 * v + 2] - min[2]) * scale)) << 2);
   }
   // two stable counting sorts, low digit first, rank the codes
-  const low = stableRanks(slots, 1 << DIGIT_BITS, (v) => (codes[v] < 0 ? -1 : codes[v] & ((1 << DIGIT_BITS) - 1)));
+  const lowDigits = new Int32Array(slots);
+  for (let v = 0; v < slots; v++) lowDigits[v] = codes[v] < 0 ? -1 : codes[v] & ((1 << DIGIT_BITS) - 1);
+  const low = stableRanks(lowDigits, 1 << DIGIT_BITS);
   const byLow = new Int32Array(mesh.nVertices);
   for (let v = 0; v < slots; v++) if (low[v] >= 0) byLow[low[v]] = v;
-  const high = stableRanks(byLow.length, 1 << DIGIT_BITS, (i) => codes[byLow[i]] >>> DIGIT_BITS);
+  const highDigits = new Int32Array(byLow.length);
+  for (let i = 0; i < byLow.length; i++) highDigits[i] = codes[byLow[i]] >>> DIGIT_BITS;
+  const high = stableRanks(highDigits, 1 << DIGIT_BITS);
   const ranks = new Int32Array(slots).fill(-1);
   for (let i = 0; i < byLow.length; i++) ranks[byLow[i]] = high[i];
   return ranks;
@@ -93,19 +99,17 @@ function spreadBits(x: number): number {
 }
 
 /**
- * A counting sort of `0 … n − 1` by `key(i)` in `0 … keys − 1`, stable (equal keys keep their
- * order): returns each one's rank, -1 for those whose key is -1 (left out).
+ * A counting sort of `0 … n − 1` by `keys[i]` in `0 … keyCount − 1`, stable (equal keys keep their
+ * order): returns each one's rank, -1 for those whose key is -1 (left out). The keys come as an
+ * array rather than a function: one function called with four different keys could not be
+ * inlined, and the renumbering of the 1.3M-triangle icosphere took 343 ms instead of 313.
  */
-function stableRanks(n: number, keys: number, key: (i: number) => number): Int32Array {
-  const keyOf = new Int32Array(n);
-  const starts = new Int32Array(keys + 1);
-  for (let i = 0; i < n; i++) {
-    const k = key(i);
-    keyOf[i] = k;
-    if (k >= 0) starts[k + 1]++;
-  }
-  for (let k = 0; k < keys; k++) starts[k + 1] += starts[k];
+function stableRanks(keys: Int32Array, keyCount: number): Int32Array {
+  const n = keys.length;
+  const starts = new Int32Array(keyCount + 1);
+  for (let i = 0; i < n; i++) if (keys[i] >= 0) starts[keys[i] + 1]++;
+  for (let k = 0; k < keyCount; k++) starts[k + 1] += starts[k];
   const ranks = new Int32Array(n);
-  for (let i = 0; i < n; i++) ranks[i] = keyOf[i] < 0 ? -1 : starts[keyOf[i]]++;
+  for (let i = 0; i < n; i++) ranks[i] = keys[i] < 0 ? -1 : starts[keys[i]]++;
   return ranks;
 }
