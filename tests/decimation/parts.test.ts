@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { keepsOrientation } from '../../src/core/decimation/collapses.js';
-import { addPlane, optimalPoint, quadricError } from '../../src/core/decimation/quadric.js';
+import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError, sumQuadrics } from '../../src/core/decimation/quadric.js';
 import { Candidates } from '../../src/core/decimation/candidates.js';
 import { halfedgeFromTo } from '../../src/core/edits/index.js';
 import { seededRandom } from '../../src/core/random.js';
@@ -65,6 +65,20 @@ describe('quadrics', () => {
     expect(optimalPoint(q, 0, point)).toBe(true);
     expect(Array.from(point).map((x) => +x.toFixed(12))).toEqual([1, 2, 3]);
     expect(quadricError(q, 0, 1, 2, 3)).toBe(0);
+  });
+
+  it('sum into a third quadric or into the first of the two', () => {
+    const q = new Float64Array(2 * QUADRIC_SIZE);
+    addPlane(q, 0, 1, 0, 0, -1, 1); // x = 1
+    q[AREA] = 1;
+    addPlane(q, QUADRIC_SIZE, 0, 1, 0, -2, 1); // y = 2
+    q[QUADRIC_SIZE + AREA] = 2;
+    const sum = new Float64Array(QUADRIC_SIZE);
+    sumQuadrics(q, 0, QUADRIC_SIZE, sum, 0);
+    expect(quadricError(sum, 0, 0, 0, 0)).toBe(1 + 4);
+    expect(sum[AREA]).toBe(3);
+    sumQuadrics(q, 0, QUADRIC_SIZE, q, 0);
+    expect(Array.from(q.subarray(0, QUADRIC_SIZE))).toEqual(Array.from(sum));
   });
 
   it('refuse to pick a point when the planes are parallel or meet in a line', () => {

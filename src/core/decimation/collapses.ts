@@ -40,7 +40,7 @@ import { PointerWriter } from '../edits/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import type { ElementIds } from '../operation.js';
 import { Candidates } from './candidates.js';
-import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError } from './quadric.js';
+import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError, sumQuadrics } from './quadric.js';
 
 /** Weight of a boundary edge's constraint plane, per unit of the edge's squared length. */
 const BOUNDARY_WEIGHT = 1000;
@@ -72,8 +72,8 @@ export class Decimator {
   /** The next scan plans every live edge, not only those the last pass touched. */
   private planEveryEdge = true;
   private readonly candidates = new Candidates();
-  /** The edges a pass chose to collapse (the first of them). */
-  private readonly chosen: Int32Array;
+  /** 1 for each edge the pass chose to collapse. */
+  private readonly chosen: Uint8Array;
   /** Largest mean squared distance a merged vertex may have from its original planes. */
   private readonly maxSquaredError: number;
   /** Collapses made, and refused by a check that a later collapse could change, since every edge was last planned. */
@@ -98,7 +98,7 @@ export class Decimator {
     this.live = new Int32Array(mesh.edgeSlots);
     for (let e = 0; e < mesh.edgeSlots; e++) if (!mesh.eDeleted[e]) this.live[this.liveCount++] = e;
     this.touched = new Uint8Array(mesh.vertexSlots);
-    this.chosen = new Int32Array(mesh.edgeSlots);
+    this.chosen = new Uint8Array(mesh.edgeSlots);
     this.maxSquaredError = maxError * maxError;
   }
 
@@ -165,13 +165,19 @@ export class Decimator {
       if (touched[a] || touched[b]) continue;
       touched[a] = 1;
       touched[b] = 1;
-      chosen[nChosen++] = e;
+      chosen[e] = 1;
+      nChosen++;
       facesChosen += 2;
     }
-    // 4. collapse them in id order: in a mesh in spatial order, one after its neighbours
-    chosen.subarray(0, nChosen).sort();
-    for (let i = 0; i < nChosen && mesh.nFaces > faceGoal; i++) {
-      const e = chosen[i];
+    // 4. collapse them in id order (the live edges are): in a mesh in spatial order, one after its
+    // neighbours. A chosen edge is never deleted by another's collapse, which only deletes edges
+    // at its own ends
+    for (let i = 0; i < n && nChosen > 0; i++) {
+      const e = live[i];
+      if (chosen[e] === 0) continue;
+      chosen[e] = 0;
+      nChosen--;
+      if (mesh.nFaces <= faceGoal) continue;
       const a = heVertex[2 * e];
       const b = heVertex[2 * e + 1];
       this.plan(e);
@@ -185,7 +191,7 @@ export class Decimator {
       }
       // collapse: a survives at the planned point and stands for the planes of both ends
       collapseEdgeAt(w, e, point);
-      for (let k = 0; k < QUADRIC_SIZE; k++) q[QUADRIC_SIZE * a + k] += q[QUADRIC_SIZE * b + k];
+      sumQuadrics(q, QUADRIC_SIZE * a, QUADRIC_SIZE * b, q, QUADRIC_SIZE * a);
       this.onBoundary[a] |= this.onBoundary[b];
       this.collapsedSinceReplan++;
       survivors?.push(a);
@@ -221,7 +227,7 @@ export class Decimator {
     const b = heVertex[2 * e + 1];
     const aOnBoundary = this.onBoundary[a] === 1;
     const bOnBoundary = this.onBoundary[b] === 1;
-    for (let k = 0; k < QUADRIC_SIZE; k++) sum[k] = q[QUADRIC_SIZE * a + k] + q[QUADRIC_SIZE * b + k];
+    sumQuadrics(q, QUADRIC_SIZE * a, QUADRIC_SIZE * b, sum, 0);
     this.bestCost = Infinity;
 
     // one end on the boundary: onto that end
