@@ -46,9 +46,19 @@ export interface CollapseOptions extends EditOptions {
 const ends = [0, 0];
 const halves = [0.5, 0.5];
 
-/** Scratch lists of the link condition, reused: decimation asks it a million times. */
+/**
+ * Scratch lists of the link condition, reused: decimation asks it a million times. They are never
+ * emptied, only counted from 0 again: an array emptied by `length = 0` gives its memory up, and
+ * the next pushes allocate it again.
+ */
 const neighboursOfB: number[] = [];
 const facesOfB: number[] = [];
+
+/** True when `x` is among the first `count` items of `list`. */
+function listed(list: number[], count: number, x: number): boolean {
+  for (let i = 0; i < count; i++) if (list[i] === x) return true;
+  return false;
+}
 
 /**
  * Why edge `e` cannot be collapsed, or null when it can (the rules are listed above).
@@ -80,12 +90,12 @@ export function canCollapseEdge(mesh: HalfedgeMesh, e: number): string | null {
   }
 
   // the link condition: gather b's neighbours and faces, then look at a's
-  neighboursOfB.length = 0;
-  facesOfB.length = 0;
+  let neighbours = 0;
+  let faces = 0;
   let x = t;
   do {
-    neighboursOfB.push(heVertex[x ^ 1]);
-    if (heFace[x] !== f0 && heFace[x] !== f1 && heFace[x] !== -1) facesOfB.push(heFace[x]);
+    neighboursOfB[neighbours++] = heVertex[x ^ 1];
+    if (heFace[x] !== f0 && heFace[x] !== f1 && heFace[x] !== -1) facesOfB[faces++] = heFace[x];
     x = hePrev[x] ^ 1;
   } while (x !== t);
   x = h;
@@ -94,11 +104,11 @@ export function canCollapseEdge(mesh: HalfedgeMesh, e: number): string | null {
     if (y === b && x !== h) {
       return `v${a} and v${b} are also joined by e${x >> 1}: collapsing e${e} would turn e${x >> 1} into a loop`;
     }
-    if (y !== b && y !== c && y !== d && neighboursOfB.includes(y)) {
+    if (y !== b && y !== c && y !== d && listed(neighboursOfB, neighbours, y)) {
       return `v${a} and v${b} (the ends of e${e}) are both joined to v${y}, which is not across a triangle of e${e}: collapsing would join them twice (the link condition fails)`;
     }
     const f = heFace[x];
-    if (facesOfB.includes(f)) {
+    if (listed(facesOfB, faces, f)) {
       return `f${f} has both v${a} and v${b} as corners but not along e${e}: collapsing would make it pass through one vertex twice`;
     }
     x = hePrev[x] ^ 1;
