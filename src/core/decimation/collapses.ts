@@ -82,10 +82,10 @@ export class Decimator {
   /** True once no allowed collapse is left. */
   exhausted = false;
 
-  /** Scratch: the summed quadric of an edge's ends, and the best point found for it. */
+  /** Scratch: the summed quadric of an edge's ends, the points a plan weighs, and the best of them. */
   private readonly sum = new Float64Array(QUADRIC_SIZE);
+  private readonly tried = new Float64Array(9);
   private readonly point = new Float64Array(3);
-  private bestCost = Infinity;
 
   constructor(mesh: HalfedgeMesh, maxError: number) {
     this.mesh = mesh;
@@ -228,45 +228,46 @@ export class Decimator {
     const aOnBoundary = this.onBoundary[a] === 1;
     const bOnBoundary = this.onBoundary[b] === 1;
     sumQuadrics(q, QUADRIC_SIZE * a, QUADRIC_SIZE * b, sum, 0);
-    this.bestCost = Infinity;
-
+    // the points to weigh: one end, either end, the optimum, or (when the planes allow a range of
+    // points) both ends and the middle; weighed in one place, so the engine inlines the weighing
+    const tried = this.tried;
+    let n = 0;
     // one end on the boundary: onto that end
     if (aOnBoundary !== bOnBoundary) {
-      this.consider(aOnBoundary ? a : b);
+      n = this.tryVertex(aOnBoundary ? a : b, n);
     }
     // both ends on the boundary: along a boundary edge onto either end, across the surface never
     else if (aOnBoundary) {
-      if (heFace[2 * e] === -1 || heFace[2 * e + 1] === -1) {
-        this.consider(a);
-        this.consider(b);
+      if (heFace[2 * e] === -1 || heFace[2 * e + 1] === -1) n = this.tryVertex(b, this.tryVertex(a, n));
+    }
+    // inside: the best point, or the best of the ends and the middle
+    else if (optimalPoint(sum, 0, tried)) {
+      n = 1;
+    } else {
+      n = this.tryVertex(b, this.tryVertex(a, n));
+      for (let k = 0; k < 3; k++) tried[6 + k] = (p[3 * a + k] + p[3 * b + k]) / 2;
+      n = 3;
+    }
+    const point = this.point;
+    let best = Infinity;
+    for (let i = 0; i < 3 * n; i += 3) {
+      const cost = quadricError(sum, 0, tried[i], tried[i + 1], tried[i + 2]);
+      if (cost < best) {
+        best = cost;
+        point[0] = tried[i];
+        point[1] = tried[i + 1];
+        point[2] = tried[i + 2];
       }
     }
-    // inside: the best point, or the best of the ends and the middle when the planes allow a range
-    else if (optimalPoint(sum, 0, this.point)) {
-      this.bestCost = quadricError(sum, 0, this.point[0], this.point[1], this.point[2]);
-    } else {
-      this.consider(a);
-      this.consider(b);
-      this.considerPoint((p[3 * a] + p[3 * b]) / 2, (p[3 * a + 1] + p[3 * b + 1]) / 2, (p[3 * a + 2] + p[3 * b + 2]) / 2);
-    }
     // too far from the original surface?
-    return this.bestCost > this.maxSquaredError * sum[AREA] ? Infinity : this.bestCost;
+    return best > this.maxSquaredError * sum[AREA] ? Infinity : best;
   }
 
-  /** Keeps vertex `v`'s position in `point` when the summed quadric is smaller there. */
-  private consider(v: number): void {
+  /** Adds vertex `v`'s position to the points tried, after the first `n`; returns their new count. */
+  private tryVertex(v: number, n: number): number {
     const p = this.positions;
-    this.considerPoint(p[3 * v], p[3 * v + 1], p[3 * v + 2]);
-  }
-
-  private considerPoint(x: number, y: number, z: number): void {
-    const cost = quadricError(this.sum, 0, x, y, z);
-    if (cost < this.bestCost) {
-      this.bestCost = cost;
-      this.point[0] = x;
-      this.point[1] = y;
-      this.point[2] = z;
-    }
+    for (let k = 0; k < 3; k++) this.tried[3 * n + k] = p[3 * v + k];
+    return n + 1;
   }
 }
 
