@@ -9,7 +9,8 @@
  * without asking again. Each pass:
  *   1. plans again the edges of the vertices the last pass touched, in edge order (the rest keep
  *      their plans), and counts the costs (`candidates.ts`);
- *   2. collects the cheapest, about as many as the pass is to collapse, and sorts them;
+ *   2. collects the cheapest, about as many as the pass is to collapse, in order of cost to within
+ *      an eighth (`candidates.ts`);
  *   3. chooses them in that order, skipping an edge with an end already chosen, until the chosen
  *      would take the pass's faces, or the costs climb past 1.5 times the cost the pass expected
  *      to reach (once a sixth of its faces are chosen: on a mesh where most of the cheap edges
