@@ -671,7 +671,7 @@ function readBinaryBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progre
       continue;
     }
     offset = isIndexList(properties)
-      ? readIndexListRows(bytes, reader, offset, element, properties[0], progress)
+      ? readIndexListRows(bytes, reader, offset, element, properties, progress)
       : readRowsWithLists(bytes, reader, offset, element, properties, progress);
   }
   if (offset < end) plan.notes.push(`ignored ${plural(end - offset, 'byte')} after the last element`);
@@ -763,11 +763,12 @@ function readIndexListRows(
   reader: BinaryReader,
   offset: number,
   element: PlyElement,
-  p: PropertyPlan,
+  properties: PropertyPlan[],
   progress: Progress,
 ): number {
   const { view, littleEndian } = reader;
   const rows = element.count;
+  const p = properties[0];
   const list = p.list!;
   // runs read int32s, the same numbers as uint32s where they are not negative; a list that may
   // hold -1 (strips) is read in runs only when it is signed, so that 0xffffffff is never taken for it
@@ -783,7 +784,7 @@ function readIndexListRows(
       row = ranTo;
       list.items.length = list.starts[row];
     } else {
-      offset = readRowsWithLists(bytes, reader, offset, element, [p], progress, row, row + 1);
+      offset = readRowsWithLists(bytes, reader, offset, element, properties, progress, row, row + 1);
       row++;
     }
     if ((row & PROGRESS_ROWS) === 0) progress(offset / bytes.length);
