@@ -12,6 +12,7 @@
  *   colour.data.set([255, 0, 0], 3 * v);
  */
 import { InvalidInputError } from './errors.js';
+import { permuteItems, type Scratch } from './permute.js';
 
 export const attributeArrayTypes = {
   int8: Int8Array,
@@ -149,16 +150,10 @@ export class AttributeSet {
     }
   }
 
-  /** Keeps element `i` at `oldToNew[i]` (dropped where it is -1); used by compaction. */
-  permute(oldToNew: Int32Array, newCount: number): void {
+  /** Keeps element `i` at `oldToNew[i]` (dropped where it is -1); used by compaction (see `permute.ts`). */
+  permute(oldToNew: Int32Array, newCount: number, scratch: Scratch): void {
     for (const attribute of this.byName.values()) {
-      const { data, itemSize } = attribute;
-      const next = new attributeArrayTypes[attribute.type](newCount * itemSize);
-      for (let i = 0; i < oldToNew.length; i++) {
-        const j = oldToNew[i];
-        if (j >= 0) for (let k = 0; k < itemSize; k++) next[j * itemSize + k] = data[i * itemSize + k];
-      }
-      attribute.data = next;
+      attribute.data = permuteItems(attribute.data, attribute.itemSize, oldToNew, newCount, scratch);
     }
     this.capacity = newCount;
   }

@@ -36,6 +36,7 @@
 import { AttributeSet } from './attributes.js';
 import { InvalidInputError, TopologyError } from './errors.js';
 import { attributeSetOf, type ElementKind, elementKinds, lengthsByKind, meshArrays, roomByKind, setMeshArray, slotCount } from './mesh-arrays.js';
+import { permuteItems, Scratch } from './permute.js';
 
 export interface MeshCapacity {
   vertices: number;
@@ -405,21 +406,15 @@ export class HalfedgeMesh {
     }
     const byKind: Record<ElementKind, Int32Array> = { vertex: maps.vertices, halfedge, edge, face: maps.faces };
     const live: Record<ElementKind, number> = { vertex: this.nVertices, halfedge: 2 * this.nEdges, edge: this.nEdges, face: this.nFaces };
+    const scratch = new Scratch();
     for (const spec of meshArrays) {
       const old = this[spec.name];
-      const map = byKind[spec.owner];
+      const count = live[spec.owner];
+      if (spec.refers) setMeshArray(this, spec.name, permuteItems(old, 1, byKind[spec.owner], count, scratch, byKind[spec.refers]));
       // flags are all 0 afterwards: only live elements remain
-      const next = new spec.type(live[spec.owner]);
-      if (spec.refers) {
-        const target = byKind[spec.refers];
-        for (let i = 0; i < map.length; i++) {
-          const j = map[i];
-          if (j >= 0) next[j] = old[i] < 0 ? old[i] : target[old[i]];
-        }
-      }
-      setMeshArray(this, spec.name, next);
+      else setMeshArray(this, spec.name, old.length === count ? old.fill(0) : new spec.type(count));
     }
-    for (const kind of elementKinds) attributeSetOf(this, kind).permute(byKind[kind], live[kind]);
+    for (const kind of elementKinds) attributeSetOf(this, kind).permute(byKind[kind], live[kind], scratch);
     this.vertexSlots = live.vertex;
     this.edgeSlots = live.edge;
     this.faceSlots = live.face;

@@ -10,6 +10,7 @@ import {
   torus,
   validate,
 } from '../../src/index.js';
+import { Scratch } from '../../src/core/permute.js';
 
 /** Deletes every element of the connected component that contains face f. */
 function deleteComponent(mesh: HalfedgeMesh, f: number): void {
@@ -124,10 +125,16 @@ describe('AttributeSet', () => {
     const set = new AttributeSet(3);
     const a = set.add('a', 'float64', 1);
     a.data.set([1, 2, 3]);
-    set.permute(Int32Array.from([1, -1, 0]), 2);
+    const scratch = new Scratch();
+    set.permute(Int32Array.from([1, -1, 0]), 2, scratch);
     expect(Array.from(set.get('a')!.data)).toEqual([3, 1]);
+    // nothing dropped: the same array, renumbered in place
+    const data = set.get('a')!.data;
+    set.permute(Int32Array.from([1, 0]), 2, scratch);
+    expect(set.get('a')!.data).toBe(data);
+    expect(Array.from(data)).toEqual([1, 3]);
     set.resize(5, 2);
-    expect(Array.from(set.get('a')!.data)).toEqual([3, 1, 0, 0, 0]);
+    expect(Array.from(set.get('a')!.data)).toEqual([1, 3, 0, 0, 0]);
   });
 });
 

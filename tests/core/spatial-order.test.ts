@@ -88,8 +88,11 @@ describe('renumber', () => {
     const before = mesh.clone();
     const reversed = (n: number) => Int32Array.from({ length: n }, (_, i) => n - 1 - i);
     const maps = { vertices: reversed(mesh.vertexSlots), edges: reversed(mesh.edgeSlots), faces: reversed(mesh.faceSlots) };
+    const arrays = meshArrays.map((spec) => mesh[spec.name]);
     mesh.renumber(maps);
     expect(validate(mesh)).toEqual([]);
+    // with no slot to spare, every array is renumbered where it is
+    meshArrays.forEach((spec, i) => expect(mesh[spec.name]).toBe(arrays[i]));
     expectSameMeshRenumbered(before, mesh, maps);
     mesh.renumber(maps); // reversing is its own inverse
     for (const spec of meshArrays) expect(mesh[spec.name]).toEqual(before[spec.name]);
