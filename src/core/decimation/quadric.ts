@@ -28,9 +28,15 @@ export const AREA = 10;
  * 1e-5 for two neighbours on a sphere of ten thousand triangles, 1e-9 on a sphere of a million,
  * and more as merged vertices gather planes from further apart. The optimum is the better point
  * wherever it can be trusted (on a sphere, the fallback points leave long slivers), so the bar
- * is low, yet six orders of magnitude above rounding.
+ * is low, yet five orders of magnitude above rounding. At 1e-9 it sat where a million-triangle
+ * sphere's neighbours do, and half of their plans weighed the fallback points instead: decimating
+ * the 1.3M-triangle icosphere took 1695–1750 ms that way against 1646–1650 at 1e-10 (medians of
+ * 10 by turns), the 269k-triangle Igea scan of the corpus 680 against 585 ms, and the results
+ * stray about as far from the input: the icosphere at most 5.75e-5 against 5.81e-5, the
+ * latitude–longitude sphere of the benchmark 7.81e-5 against 7.63e-5 (1.5e-5 and 2.05e-5 on
+ * average, both ways), twelve meshes of the corpus the same to three digits.
  */
-const CONDITION = 1e-9;
+const CONDITION = 1e-10;
 
 /** Adds `weight` × the plane n·x + d = 0 (n of unit length) to the quadric at `o`. */
 export function addPlane(q: Float64Array, o: number, nx: number, ny: number, nz: number, d: number, weight: number): void {
