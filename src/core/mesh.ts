@@ -36,7 +36,7 @@
 import { AttributeSet } from './attributes.js';
 import { InvalidInputError, TopologyError } from './errors.js';
 import { attributeSetOf, type ElementKind, elementKinds, lengthsByKind, meshArrays, roomByKind, setMeshArray, slotCount } from './mesh-arrays.js';
-import { permuteItems, Scratch } from './permute.js';
+import { clearedFlags, permuteItems, Scratch } from './permute.js';
 
 export interface MeshCapacity {
   vertices: number;
@@ -410,9 +410,8 @@ export class HalfedgeMesh {
     for (const spec of meshArrays) {
       const old = this[spec.name];
       const count = live[spec.owner];
-      if (spec.refers) setMeshArray(this, spec.name, permuteItems(old, 1, byKind[spec.owner], count, scratch, byKind[spec.refers]));
-      // flags are all 0 afterwards: only live elements remain
-      else setMeshArray(this, spec.name, old.length === count ? old.fill(0) : new spec.type(count));
+      const next = spec.refers ? permuteItems(old, 1, byKind[spec.owner], count, scratch, byKind[spec.refers]) : clearedFlags(old, count);
+      setMeshArray(this, spec.name, next);
     }
     for (const kind of elementKinds) attributeSetOf(this, kind).permute(byKind[kind], live[kind], scratch);
     this.vertexSlots = live.vertex;

@@ -42,6 +42,18 @@ export function permuteItems<T extends ItemArray>(data: T, itemSize: number, map
   return data;
 }
 
+/**
+ * A deleted-flag array after renumbering: only live elements remain, so every flag is 0. Cleared
+ * in place when it holds `count` flags already (as `permuteItems` renumbers in place), else new.
+ * Moving the flags as items would give the same zeros, but scattering them made renumbering the
+ * 1.3M-triangle icosphere 20 ms slower (335–347 against 313–329 ms).
+ */
+export function clearedFlags<T extends ItemArray>(flags: T, count: number): T {
+  if (flags.length !== count) return new (flags.constructor as new (length: number) => T)(count);
+  flags.fill(0);
+  return flags;
+}
+
 function scatterIds(from: ItemArray, to: ItemArray, map: Int32Array, ids: Int32Array): void {
   for (let i = 0; i < map.length; i++) {
     const j = map[i];

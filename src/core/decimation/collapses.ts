@@ -250,8 +250,8 @@ export class Decimator {
       n = 1;
     } else {
       n = this.tryVertex(b, this.tryVertex(a, n));
-      for (let k = 0; k < 3; k++) tried[6 + k] = (p[3 * a + k] + p[3 * b + k]) / 2;
-      n = 3;
+      for (let k = 0; k < 3; k++) tried[3 * n + k] = (p[3 * a + k] + p[3 * b + k]) / 2;
+      n++;
     }
     const point = this.point;
     let best = Infinity;
