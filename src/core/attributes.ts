@@ -12,6 +12,7 @@
  *   colour.data.set([255, 0, 0], 3 * v);
  */
 import { InvalidInputError } from './errors.js';
+import { type Memory, newArrayLike } from './memory.js';
 import { permuteItems, type Scratch } from './permute.js';
 
 export const attributeArrayTypes = {
@@ -114,10 +115,10 @@ export class AttributeSet {
     return this.byName.values();
   }
 
-  /** Reallocates every attribute for `capacity` elements, keeping the first `used` of them. */
-  resize(capacity: number, used: number): void {
+  /** Reallocates every attribute for `capacity` elements (in `memory`), keeping the first `used` of them. */
+  resize(capacity: number, used: number, memory?: Memory): void {
     for (const attribute of this.byName.values()) {
-      const next = new attributeArrayTypes[attribute.type](capacity * attribute.itemSize);
+      const next = newArrayLike(attribute.data, capacity * attribute.itemSize, memory);
       next.set(attribute.data.subarray(0, Math.min(used, capacity) * attribute.itemSize));
       attribute.data = next;
     }

@@ -36,6 +36,7 @@
 import { AttributeSet } from './attributes.js';
 import { InvalidInputError, TopologyError } from './errors.js';
 import { attributeSetOf, type ElementKind, elementKinds, lengthsByKind, meshArrays, roomByKind, setMeshArray, slotCount } from './mesh-arrays.js';
+import { type Memory, newArrayLike } from './memory.js';
 import { clearedFlags, permuteItems, Scratch } from './permute.js';
 
 export interface MeshCapacity {
@@ -254,18 +255,21 @@ export class HalfedgeMesh {
   // ---------------------------------------------------------------------------------------------
   // Growth. New elements come with every relation -1: the caller wires them, then `validate()`.
 
-  /** Makes room for at least this many slots of each kind, without changing any element. */
-  reserve(capacity: Partial<MeshCapacity>): void {
+  /**
+   * Makes room for at least this many slots of each kind, without changing any element. The
+   * arrays that grow are made anew in `memory`.
+   */
+  reserve(capacity: Partial<MeshCapacity>, memory?: Memory): void {
     const { vertices = 0, edges = 0, faces = 0 } = capacity;
     const wanted = lengthsByKind({ vertices, edges, faces });
     // decided before any array grows (the capacities are read off the arrays themselves)
     const room = roomByKind(this);
     const grows = (kind: ElementKind) => wanted[kind] > room[kind];
     for (const spec of meshArrays) {
-      if (grows(spec.owner)) setMeshArray(this, spec.name, grow(this[spec.name], wanted[spec.owner], slotCount(this, spec.owner)));
+      if (grows(spec.owner)) setMeshArray(this, spec.name, grow(this[spec.name], wanted[spec.owner], slotCount(this, spec.owner), memory));
     }
     for (const kind of elementKinds) {
-      if (grows(kind)) attributeSetOf(this, kind).resize(wanted[kind], slotCount(this, kind));
+      if (grows(kind)) attributeSetOf(this, kind).resize(wanted[kind], slotCount(this, kind), memory);
     }
   }
 
@@ -440,6 +444,15 @@ export class HalfedgeMesh {
   }
 
   /**
+   * A mesh over this one's arrays as they are now, nothing copied. When this mesh then grows
+   * into new arrays, the view keeps the old ones: a level reads the mesh it started from there
+   * while its new arrays are being rewired. The attribute sets are this mesh's own.
+   */
+  view(): HalfedgeMesh {
+    return Object.assign(Object.create(HalfedgeMesh.prototype) as HalfedgeMesh, this);
+  }
+
+  /**
    * The slot and deletion counts as they are, or sets them (a recorded change being applied or
    * undone: the arrays must already hold that many slots).
    */
@@ -466,9 +479,9 @@ function nextCapacity(used: number): number {
   return Math.max(8, Math.ceil(used * 1.5));
 }
 
-function grow<T extends Int32Array | Uint8Array>(array: T, capacity: number, used: number): T {
+function grow<T extends Int32Array | Uint8Array>(array: T, capacity: number, used: number, memory?: Memory): T {
   if (capacity > 0x7fffffff) throw new InvalidInputError(`a mesh cannot hold ${capacity} elements of one kind`);
-  const next = new (array.constructor as new (n: number) => T)(capacity);
+  const next = newArrayLike(array, capacity, memory);
   next.set(array.subarray(0, used));
   return next;
 }

@@ -36,23 +36,33 @@ type MeshArrayType<name extends MeshArrayName> = name extends 'vDeleted' | 'eDel
  */
 export function serializeMesh(mesh: HalfedgeMesh, spare = 0): SerializedMesh {
   const extra = lengthsByKind({ vertices: spare, edges: spare, faces: spare });
-  const room = (kind: ElementKind) => slotCount(mesh, kind) + extra[kind];
-  const copy = <T extends AttributeArray | Int32Array | Uint8Array>(array: T, length: number, used: number): T => {
-    const next = new (array.constructor as new (n: number) => T)(length);
+  return serializedForm(mesh, (array, kind, itemSize) => {
+    const used = slotCount(mesh, kind) * itemSize;
+    const next = new (array.constructor as new (n: number) => typeof array)(used + extra[kind] * itemSize);
     (next as Int32Array).set(array.subarray(0, used) as Int32Array);
     return next;
-  };
-  const arrays = Object.fromEntries(meshArrays.map(({ name, owner }) => [name, copy(mesh[name], room(owner), slotCount(mesh, owner))]));
+  });
+}
+
+/**
+ * The mesh's own arrays in the serialized form, not copied: for a thread that shares their memory
+ * (see `subdivision/helper-thread.ts`), which adopts them with `deserializeMesh`.
+ */
+export function shareMesh(mesh: HalfedgeMesh): SerializedMesh {
+  return serializedForm(mesh, (array) => array);
+}
+
+/** The serialized form, each array as `take` gives it (`itemSize` numbers per element of `kind`). */
+function serializedForm(mesh: HalfedgeMesh, take: <T extends AttributeArray | Int32Array | Uint8Array>(array: T, kind: ElementKind, itemSize: number) => T): SerializedMesh {
+  const arrays = Object.fromEntries(meshArrays.map(({ name, owner }) => [name, take(mesh[name], owner, 1)]));
   const attributes = Object.fromEntries(
     elementKinds.map((kind) => {
-      const count = slotCount(mesh, kind);
-      const length = room(kind);
       const list = [...attributeSetOf(mesh, kind)].map(({ name, type, itemSize, interpolation, data }) => ({
         name,
         type,
         itemSize,
         interpolation,
-        data: copy(data, length * itemSize, count * itemSize),
+        data: take(data, kind, itemSize),
       }));
       return [kind, list];
     }),
