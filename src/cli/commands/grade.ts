@@ -1,9 +1,9 @@
-import { dirname, extname, resolve } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { dirname, resolve } from 'node:path';
 import { Worker } from 'node:worker_threads';
 import { InvalidInputError } from '../../core/errors.js';
 import { type Exercise, findExercise, exercises, type GradeReport, gradeSolution, parseExercise, SolutionError } from '../../core/practice/index.js';
 import { type SandboxPort, sandboxRunner } from '../../workers/practice-runner.js';
+import { workerEntry } from '../../node/worker-entry.js';
 import { parseOptions, readBytes, UsageError } from '../io.js';
 import type { Command } from './index.js';
 
@@ -84,17 +84,10 @@ function readText(path: string): string {
   return new TextDecoder().decode(readBytes(path));
 }
 
-/** The worker file beside this one (`.ts` when run from source, `.js` when built). */
-const extension = extname(fileURLToPath(import.meta.url));
-const workerFile = new URL(`../grade-worker${extension}`, import.meta.url);
-/** From source, the worker thread first registers the TypeScript loader the command runs under. */
-const workerEntry =
-  extension === '.ts'
-    ? { code: `import('tsx/esm/api').then(({ register }) => (register(), import(${JSON.stringify(workerFile.href)})))`, eval: true }
-    : { code: workerFile, eval: false };
+const workerFile = workerEntry(import.meta.url, '../grade-worker');
 
 function openWorkerSandbox(): SandboxPort {
-  const worker = new Worker(workerEntry.code, { eval: workerEntry.eval, resourceLimits: { maxOldGenerationSizeMb: HEAP_LIMIT_MB, maxYoungGenerationSizeMb: 32 }, stdout: true, stderr: true });
+  const worker = new Worker(workerFile.code, { eval: workerFile.eval, resourceLimits: { maxOldGenerationSizeMb: HEAP_LIMIT_MB, maxYoungGenerationSizeMb: 32 }, stdout: true, stderr: true });
   return {
     post: (request) => worker.postMessage(request),
     listen(onMessage, onFailure) {
