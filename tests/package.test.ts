@@ -60,6 +60,20 @@ describe('the packed package in a fresh project', () => {
     expect(JSON.parse(run('node', ['use.mjs'], project))).toEqual({ genus: 1, problems: 0, client: 'function', bytes: true });
   });
 
+  it('subdivides in Node with a helper thread, into shared memory, as this thread alone would', () => {
+    writeFileSync(
+      join(project, 'helper.mjs'),
+      `import { buildMesh, subdivide, torus, useHelperThread, validate } from 'halfedge-lab';
+       const level = () => { const { mesh } = buildMesh(torus(250, 200)); subdivide(mesh, 'catmull-clark'); return mesh; };
+       const helped = level();
+       useHelperThread(null);
+       const alone = level();
+       const same = ['heNext', 'heVertex', 'positions'].every((k) => helped[k].every((x, i) => Object.is(x, alone[k][i])));
+       console.log(JSON.stringify({ shared: helped.heNext.buffer instanceof SharedArrayBuffer, alone: alone.heNext.buffer instanceof SharedArrayBuffer, same, problems: validate(helped).length }));`,
+    );
+    expect(JSON.parse(run('node', ['helper.mjs'], project))).toEqual({ shared: true, alone: false, same: true, problems: 0 });
+  });
+
   it('ships type declarations that a strict TypeScript project accepts', () => {
     writeFileSync(
       join(project, 'use.ts'),

@@ -5,8 +5,12 @@
  * Exit status: 0 done, 1 the command ran but found problems (e.g. `validate` on a mesh that
  * needed repairs), 2 a bad file or bad arguments, with one line on stderr saying what and where.
  */
+import { installHelperThread } from '../node/helper-thread.js';
 import { commands } from './commands/index.js';
 import { reportFailure, takeReadSettings, UsageError } from './io.js';
+
+// as a program of the library's users would, through its Node entry
+installHelperThread();
 
 function usage(): string {
   const lines = Object.values(commands).map((c) => `  ${c.usage.padEnd(58)} ${c.summary}`);

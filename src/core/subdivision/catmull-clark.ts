@@ -26,6 +26,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { compactAtOnce, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
+import { handOver, noIds, startHelper, type TopologyStep } from './helper-thread.js';
 import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
 
 /**
@@ -46,11 +47,18 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   const attributes = blendedAttributes(mesh);
 
   // reserve memory: one quad per face corner, at most one corner per halfedge (exactly so when
-  // the mesh is closed; memory reserved and never written costs nothing)
-  mesh.reserve({ vertices: V + F + E, edges: 4 * E, faces: 2 * E });
+  // the mesh is closed; memory reserved and never written costs nothing). Straight through, a
+  // helper thread (when there is one) does the topology steps after the face points in the new
+  // arrays, while this one works out the new positions from the old ones
+  const helper = startHelper(mesh, listIds);
+  // what the stencils read: the old arrays, which the helper leaves alone (stepping, no view is
+  // kept, so the old arrays can go while the phases wait)
+  const old = helper === null ? mesh : mesh.view();
+  mesh.reserve({ vertices: V + F + E, edges: 4 * E, faces: 2 * E }, helper?.memory);
 
   // compute face vertices (vertex V + f for face f)
   const facePoints = addFacePoints(mesh, 'all', listIds);
+  const join = handOver(helper, mesh, 'catmull-clark', V);
   yield {
     name: 'add face points',
     explanation:
@@ -60,18 +68,19 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   };
 
   // the old vertices move last, by a rule that reads their old edges and faces: compute it now
-  const vertexPoints = attributes.map((a) => catmullClarkVertexPoints(mesh, a.data, V));
+  const vertexPoints = attributes.map((a) => catmullClarkVertexPoints(old, a.data, V));
 
   // split edges at their edge points (vertex V + F + e for edge e), placed first while each edge
   // still joins its two ends
-  for (const a of attributes) placeEdgePoints(mesh, a.data, E, V, V + F);
-  const split = splitEdges(mesh, 'all', 2, listIds, true);
+  for (const a of attributes) placeEdgePoints(old, a.data, E, V, V + F);
+  const helped = join();
+  const step = (i: number) => (helped ? noIds : catmullClarkSteps[i](mesh, listIds, V));
   yield {
     name: 'split every edge at its edge point',
     explanation:
       'Each edge gets a new vertex at the mean of its two ends and the two face points beside it (the midpoint, on the boundary). ' +
       'Every face now has twice as many sides, its corners alternating between old vertices and edge points.',
-    ...split,
+    ...step(0),
   };
 
   // split faces
@@ -80,7 +89,7 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
     explanation:
       'Each face point is joined to the edge points around it, cutting a face of n sides into n quads. ' +
       'From now on every face is a quad, whatever the mesh started with.',
-    ...fanFaces(mesh, 'all', V, 2, listIds),
+    ...step(1),
   };
 
   // move the old vertices
@@ -94,6 +103,12 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
     moved: { vertices: range(listIds, 0, V) },
   };
 }
+
+/** The topology of a level after the face points, step by step: split every edge, connect the face points (vertex V + f for face f). */
+export const catmullClarkSteps: readonly TopologyStep[] = [
+  (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, true),
+  (mesh, listIds, V) => fanFaces(mesh, 'all', V, 2, listIds),
+];
 
 /**
  * Puts the point of each edge e (vertex `firstEdgePoint + e`, in room reserved beyond the vertices

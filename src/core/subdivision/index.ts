@@ -39,6 +39,7 @@ import { type SubdivisionOptions, sqrt3Level, sqrt3Subdivision } from './sqrt3.j
 
 export { butterflySubdivision } from './butterfly.js';
 export { catmullClark } from './catmull-clark.js';
+export { type HelperThread, useHelperThread } from './helper-thread.js';
 export { loopSubdivision } from './loop.js';
 export { cannotSubdivide, type SubdivisionScheme, subdivisionSchemes } from './preconditions.js';
 export { type SubdivisionOptions, sqrt3Subdivision } from './sqrt3.js';

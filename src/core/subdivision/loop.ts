@@ -21,6 +21,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
+import { handOver, noIds, startHelper, type TopologyStep } from './helper-thread.js';
 import { cutCorners, range, splitEdges } from './topology.js';
 import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
@@ -43,25 +44,32 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   const E = mesh.edgeSlots;
   const F = mesh.faceSlots;
 
-  // reserve memory
-  mesh.reserve({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
+  // reserve memory; straight through, a helper thread (when there is one) does the topology steps
+  // in the new arrays while this one works out the new positions from the old ones
+  const helper = startHelper(mesh, listIds);
+  // what the stencils read: the old arrays, which the helper leaves alone (stepping, no view is
+  // kept, so the old arrays can go while the phases wait)
+  const old = helper === null ? mesh : mesh.view();
+  mesh.reserve({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F }, helper?.memory);
+  const join = handOver(helper, mesh, 'loop', V);
 
   // compute the new positions while the old one-rings are intact. Straight through, no phase shows
   // the edge points at the midpoints first: they go where they end (vertex V + e for edge e), as
   // the stencil reads old vertices only
   const attributes = blendedAttributes(mesh);
   const edgePoints = listIds ? attributes.map(() => new Float64Array(3 * E)) : null;
-  attributes.forEach((a, i) => loopEdgePoints(mesh, a.data, edgePoints?.[i] ?? a.data, edgePoints ? 0 : V));
-  const vertexPoints = attributes.map((a) => loopVertexPoints(mesh, a.data));
+  attributes.forEach((a, i) => loopEdgePoints(old, a.data, edgePoints?.[i] ?? a.data, edgePoints ? 0 : V));
+  const vertexPoints = attributes.map((a) => loopVertexPoints(old, a.data));
+  const helped = join();
+  const step = (i: number) => (helped ? noIds : loopSteps[i](mesh, listIds, V));
 
   // split edges
-  const split = splitEdges(mesh, 'all', 2, listIds, !listIds);
   yield {
     name: 'split every edge',
     explanation:
       'Each edge gets a new vertex at its midpoint, so every triangle becomes a hexagon whose corners alternate between old and new vertices. ' +
       'A halfedge mesh allows faces of any degree, so the mesh is still valid between the two steps of the refinement.',
-    ...split,
+    ...step(0),
   };
 
   // split faces
@@ -70,7 +78,7 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
     explanation:
       'Three new edges join the edge points of each face, cutting off its corners: one triangle becomes four similar ones. ' +
       'The mesh now has its final connectivity, but every point still sits on the old, flat triangles.',
-    ...cutCorners(mesh, listIds),
+    ...step(1),
   };
 
   // place the new (odd) vertices
@@ -94,6 +102,12 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
     moved: { vertices: range(listIds, 0, V) },
   };
 }
+
+/** The topology of a level, step by step: split every edge, cut the corners. */
+export const loopSteps: readonly TopologyStep[] = [
+  (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, !listIds),
+  (mesh, listIds) => cutCorners(mesh, listIds),
+];
 
 /**
  * The odd stencil: the new point of each edge e, three numbers per edge, written to `out` as the

@@ -1,0 +1,91 @@
+/**
+ * A second thread for a level run straight through. A level's work is of two kinds that read the
+ * old mesh and write different arrays: the topology steps rewire the pointers, the stencils work
+ * out the new positions. Given a helper thread, a level grows the mesh into shared memory (it grows
+ * every array anyway), hands the steps to the helper, and works out the stencils from the old
+ * arrays meanwhile (`HalfedgeMesh.view`).
+ *
+ * The core runs anywhere and starts no thread itself: an environment that can installs a helper
+ * with `useHelperThread` (the library's Node entry does, see `src/node/helper-thread.ts`). Without
+ * one, for a level stepped phase by phase, or for a mesh too small to gain, everything runs on the
+ * calling thread, as it also does when the helper has not begun by the time the stencils are done.
+ */
+import { attributeSetOf, elementKinds, meshArrays, type SlotCounts } from '../mesh-arrays.js';
+import type { HalfedgeMesh } from '../mesh.js';
+import { isShared, type Memory } from '../memory.js';
+import { type SerializedMesh, shareMesh } from '../serialize.js';
+import type { TopologyChange } from './topology.js';
+
+/** The schemes whose topology steps a helper can run (see `topology-task.ts`). */
+export type HelpedScheme = 'loop' | 'catmull-clark';
+
+/** One of a scheme's topology steps: `oldVertices` is the vertex count when the level began. */
+export type TopologyStep = (mesh: HalfedgeMesh, listIds: boolean, oldVertices: number) => TopologyChange;
+
+/** A level's topology steps, on the mesh's own arrays in shared memory. */
+export interface TopologyTask {
+  scheme: HelpedScheme;
+  /** The vertex count when the level began. */
+  oldVertices: number;
+  mesh: SerializedMesh;
+}
+
+export interface HelperThread {
+  /** The fewest faces a level must start from to be worth a thread. */
+  minFaces: number;
+  /** Starts the helper for a task to come (a thread takes a while to begin). */
+  start(): HelperRun;
+}
+
+export interface HelperRun {
+  /** Memory the helper shares, for the arrays it rewires. */
+  memory: Memory;
+  /** Gives the helper its task. */
+  post(task: TopologyTask): void;
+  /**
+   * Waits for the task and gives the slot counts it left, or null when the helper had not begun
+   * it (or had none): the task is then called off, and the caller runs the steps.
+   * @throws the helper's error when a step failed there.
+   */
+  join(): SlotCounts | null;
+}
+
+/** What a step the helper did reports: nothing, as a level run straight through lists no ids. */
+export const noIds: TopologyChange = { created: {}, rewired: {} };
+
+let installed: HelperThread | null = null;
+
+/** Installs the helper the levels use from now on, or none (null): every step on the calling thread. */
+export function useHelperThread(helper: HelperThread | null): void {
+  installed = helper;
+}
+
+/**
+ * Starts the helper for a level of `mesh` run straight through, before the level grows the mesh
+ * into its memory; null for a level stepped phase by phase, a mesh too small, or no helper.
+ */
+export function startHelper(mesh: HalfedgeMesh, listIds: boolean): HelperRun | null {
+  return listIds || installed === null || mesh.faceSlots < installed.minFaces ? null : installed.start();
+}
+
+/**
+ * Hands the level's remaining topology steps to the helper, when every array they write is in its
+ * memory (an array that already had room was not grown into it). The returned function waits for
+ * the helper and says whether it did the steps; false: the caller does them.
+ */
+export function handOver(run: HelperRun | null, mesh: HalfedgeMesh, scheme: HelpedScheme, oldVertices: number): () => boolean {
+  if (run !== null && sharesEveryArray(mesh)) run.post({ scheme, oldVertices, mesh: shareMesh(mesh) });
+  return () => {
+    const slots = run?.join() ?? null;
+    if (slots === null) return false;
+    mesh.vertexSlots = slots.vertexSlots;
+    mesh.edgeSlots = slots.edgeSlots;
+    mesh.faceSlots = slots.faceSlots;
+    return true;
+  };
+}
+
+function sharesEveryArray(mesh: HalfedgeMesh): boolean {
+  const attributes = elementKinds.flatMap((kind) => [...attributeSetOf(mesh, kind)].map((a) => a.data));
+  return [...meshArrays.map(({ name }) => mesh[name]), ...attributes].every(isShared);
+}
