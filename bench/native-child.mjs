@@ -1,6 +1,7 @@
 /**
- * Our side of one native comparison (see `native.ts`), in plain Node on the built library:
- * `node --expose-gc native-child.mjs OP FILE ours|meshoptimizer` prints one JSON line,
+ * Our side of one native comparison (see `native.ts`), in plain Node on the built library's Node
+ * entry (what `import 'halfedge-lab'` gives a program in Node, a helper thread included):
+ * `node --expose-gc native-child.mjs OP FILE ours|ours-one-thread|meshoptimizer` prints one JSON line,
  * `{ lib, ms, peakMB, inFaces, outFaces }`, and for decimation `distance`: how far the result
  * strays from the input (see `surface-distance.mjs`), measured after the peak memory is taken.
  * The timing policy is the native harnesses' (`bench_common.h`): the input prepared outside the
@@ -9,10 +10,11 @@
  */
 import { readFileSync } from 'node:fs';
 import { MeshoptSimplifier } from 'meshoptimizer';
-import { buildMesh, cutMesh, decimate, readMesh, subdivide } from '../dist/index.js';
+import { buildMesh, cutMesh, decimate, readMesh, subdivide, useHelperThread } from '../dist/node/index.js';
 import { distanceToSurface, triangleIndices } from './surface-distance.mjs';
 
 const [op, file, lib] = process.argv.slice(2);
+if (lib === 'ours-one-thread') useHelperThread(null);
 
 function timeLikeNatives(prepare, run) {
   const once = () => {

@@ -7,10 +7,12 @@
  * figure of each side is the median of its rounds. Every side runs in a process of its own with
  * the natives' policy: the input prepared outside the timed region, one warm-up, then the median
  * of 5 runs (3 when the warm-up took over 3 s, 1 over 30 s); our side is `native-child.mjs`, on
- * the library as built (`dist/`). Peak memory is each process's largest resident set. Decimation
- * also runs meshoptimizer's `simplify` (WebAssembly) to the same face count, and for ours and
- * meshoptimizer's says how far the result strays from the input (`distance`: the largest and the
- * mean distance from the input's vertices to the result's surface).
+ * the library as built (`dist/`), through its Node entry; for the operations that hand work to a
+ * helper thread there, a third side runs ours on one thread (`oneThread` in the JSON). Peak
+ * memory is each process's largest resident set. Decimation also runs meshoptimizer's `simplify`
+ * (WebAssembly) to the same face count, and for ours and meshoptimizer's says how far the result
+ * strays from the input (`distance`: the largest and the mean distance from the input's vertices
+ * to the result's surface).
  *
  * Without the native peers set up (`run.sh setup`), it says so and prints no native rows.
  */
@@ -31,6 +33,9 @@ interface NativeCase {
   op: NativeOp;
   mesh: string;
 }
+
+/** The operations whose default call in Node hands work to a helper thread: also run on one thread. */
+const threaded: NativeOp[] = ['loop', 'cc'];
 
 const allCases: NativeCase[] = [
   { op: 'build', mesh: 'ico_1280k' },
@@ -80,7 +85,7 @@ function runNatives(c: NativeCase): Measured[] {
  * Our side in plain Node on the built library, as a user's program would run it (a loader that
  * compiles TypeScript on the fly would add its own memory to the peak).
  */
-function runOurs(c: NativeCase, file: string, lib: 'ours' | 'meshoptimizer'): Measured {
+function runOurs(c: NativeCase, file: string, lib: 'ours' | 'ours-one-thread' | 'meshoptimizer'): Measured {
   const output = execFileSync(process.execPath, ['--expose-gc', join(here, 'native-child.mjs'), c.op, file, lib], {
     encoding: 'utf8',
     maxBuffer: 1 << 20,
@@ -129,10 +134,13 @@ export async function runNativeComparison(args: string[]): Promise<void> {
     const perRound: Measured[][] = [];
     for (let r = 0; r < rounds; r++) {
       const sides = [runOurs(c, file, 'ours'), ...runNatives(c)];
+      if (threaded.includes(c.op)) sides.push(runOurs(c, file, 'ours-one-thread'));
       if (c.op === 'decimate') sides.push(runOurs(c, file, 'meshoptimizer'));
       perRound.push(sides);
     }
-    const [ours, ...peers] = medians(perRound);
+    const [ours, ...others] = medians(perRound);
+    const oneThread = others.find((p) => p.lib === 'ours-one-thread');
+    const peers = others.filter((p) => p !== oneThread);
     const natives = peers.filter((p) => p.lib !== 'meshoptimizer');
     const best = natives.reduce((a, b) => (b.ms < a.ms ? b : a));
     const bestMemory = Math.min(...natives.map((p) => p.peakMB));
@@ -147,6 +155,7 @@ export async function runNativeComparison(args: string[]): Promise<void> {
       peerPeakMB: bestMemory,
       memoryRatio: round(ours!.peakMB / bestMemory, 2),
       peers: peers.map((p) => ({ ...p, ratio: round(ours!.ms / p.ms, 3) })),
+      ...(oneThread ? { oneThread: { ms: oneThread.ms, ratio: round(oneThread.ms / best.ms, 3), peakMB: oneThread.peakMB } } : {}),
       outFaces: ours!.outFaces,
       ...(ours!.distance ? { distance: ours!.distance } : {}),
     };
@@ -169,6 +178,7 @@ function row(r: {
   peakMB: number;
   peerPeakMB: number;
   peers: Array<Measured & { ratio: number }>;
+  oneThread?: { ms: number; ratio: number; peakMB: number };
   distance?: Measured['distance'];
 }): string {
   return [
@@ -182,6 +192,7 @@ function row(r: {
     String(r.peerPeakMB).padStart(7),
     '  ' + r.peers.map((p) => `${p.lib} ${p.ms.toFixed(0)} ms ${p.peakMB} MB (×${p.ratio.toFixed(2)})${strays(p)}`).join(', '),
     r.distance ? `; ours${strays(r)}` : '',
+    r.oneThread ? `; ours on one thread ${r.oneThread.ms.toFixed(0)} ms ${r.oneThread.peakMB} MB (×${r.oneThread.ratio.toFixed(2)})` : '',
   ].join('');
 }
 
