@@ -31,6 +31,9 @@ export interface HelperOptions {
   startWaitMs?: number;
 }
 
+/** How long a worker waits for its task before it goes (the caller grows the arrays meanwhile). */
+export const UNUSED_WORKER_MS = 60_000;
+
 /** The longest a task may run on the helper: far beyond any level that fits in memory. */
 const MAX_TASK_MS = 10 * 60 * 1000;
 
