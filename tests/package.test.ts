@@ -77,8 +77,9 @@ describe('the packed package in a fresh project', () => {
   it('ships type declarations that a strict TypeScript project accepts', () => {
     writeFileSync(
       join(project, 'use.ts'),
-      `import { buildMesh, type HalfedgeMesh, tetrahedron, vertexOutgoingHalfedges } from 'halfedge-lab';
+      `import { buildMesh, type HalfedgeMesh, installHelperThread, tetrahedron, vertexOutgoingHalfedges } from 'halfedge-lab';
        import type { PageSnapshot } from 'halfedge-lab/worker';
+       installHelperThread({ minFaces: 100_000 });
        const mesh: HalfedgeMesh = buildMesh(tetrahedron()).mesh;
        const out: number[] = [...vertexOutgoingHalfedges(mesh, 0)];
        export const faces: PageSnapshot['stats']['faces'] = out.length;`,
