@@ -6,8 +6,8 @@
  * collection, which it seldom needs: six Loop levels of a 1.3M-triangle mesh left 2.3 GB resident.
  *
  * A task's state, one shared number, goes from WAITING to TAKEN (the worker has the task and began)
- * and then to DONE or FAILED; or from WAITING to CALLED_OFF, when this thread joins before the
- * worker has begun: this thread then does the steps itself, so a worker slow to start, or failing
+ * and then to DONE or FAILED; or from WAITING to CALLED_OFF, when this thread asks (`begun`) before
+ * the worker has begun: this thread then does the steps itself, so a worker slow to start, or failing
  * to, costs no more than the time it took to ask.
  */
 import { MessageChannel, receiveMessageOnPort, Worker } from 'node:worker_threads';
@@ -27,7 +27,7 @@ export type HelperReply = { slots: SlotCounts } | { error: string };
 export interface HelperOptions {
   /** The fewest faces a level must start from to get the helper (default 50,000: a smaller level takes under 25 ms). */
   minFaces?: number;
-  /** How long `join` waits for a worker that has not begun before it does the steps itself (default 0). */
+  /** How long `begun` waits for a worker that has not begun before the caller does the steps itself (default 0). */
   startWaitMs?: number;
 }
 
@@ -50,9 +50,18 @@ function startWorker(startWaitMs: number): HelperRun {
   const worker = new Worker(entry.code, { eval: entry.eval, workerData: { state, port: port2 }, transferList: [port2] });
   worker.unref();
   let posted = false;
+  let taken: boolean | null = null;
   const finish = () => {
     void worker.terminate();
     port1.close();
+  };
+  const begun = (): boolean => {
+    if (taken === null) {
+      if (posted && startWaitMs > 0) Atomics.wait(state, 0, WAITING, startWaitMs);
+      taken = Atomics.compareExchange(state, 0, WAITING, CALLED_OFF) !== WAITING;
+      if (!taken) finish();
+    }
+    return taken;
   };
   return {
     memory: (bytes) => new SharedArrayBuffer(bytes),
@@ -60,12 +69,9 @@ function startWorker(startWaitMs: number): HelperRun {
       port1.postMessage(task);
       posted = true;
     },
-    join(): SlotCounts | null {
-      if (posted && startWaitMs > 0) Atomics.wait(state, 0, WAITING, startWaitMs);
-      if (Atomics.compareExchange(state, 0, WAITING, CALLED_OFF) === WAITING) {
-        finish();
-        return null;
-      }
+    begun,
+    join(): SlotCounts {
+      if (!begun()) throw new Error("subdivision's helper thread: joined, but it never began its task");
       const deadline = Date.now() + MAX_TASK_MS;
       while (Atomics.load(state, 0) === TAKEN && Date.now() < deadline) Atomics.wait(state, 0, TAKEN, 1000);
       const reply = receiveMessageOnPort(port1)?.message as HelperReply | undefined;

@@ -23,11 +23,11 @@ function countingHelper(): { helper: HelperThread; helped: number; calledOff: nu
       const run = helper.start();
       return {
         ...run,
-        join() {
-          const slots = run.join();
-          if (slots === null) counts.calledOff++;
-          else counts.helped++;
-          return slots;
+        begun() {
+          const begun = run.begun();
+          if (begun) counts.helped++;
+          else counts.calledOff++;
+          return begun;
         },
       };
     },
@@ -79,6 +79,8 @@ const fixtures: Array<[string, 'loop' | 'catmull-clark', () => HalfedgeMesh]> = 
   ['a closed sphere of triangles', 'loop', () => withAttributes(triangulate(uvSphere(8, 12)))],
   ['an open grid of triangles', 'loop', () => withAttributes(grid(6, 5))],
   ['a torus of quads', 'catmull-clark', () => withAttributes(torus(10, 8))],
+  // 19,200 quads, then 76,800: faces in two chunks and in five, connected by both threads
+  ['a torus of quads in several chunks', 'catmull-clark', () => withAttributes(torus(160, 120))],
   ['mixed polygons with a boundary', 'catmull-clark', () => withAttributes(flower())],
   ['a closed sphere of triangles and quads', 'catmull-clark', () => withAttributes(uvSphere(8, 12))],
 ];
@@ -121,9 +123,11 @@ describe('the helper thread', () => {
     expect(started).toBe(0);
   });
 
-  it('is called off when asked to join before it has a task, and the caller is told to do the steps', () => {
+  it('is called off when asked whether it has begun before it has a task, and the caller is told to do the steps', () => {
     const run = nodeHelperThread().start();
-    expect(run.join()).toBeNull();
+    expect(run.begun()).toBe(false);
+    expect(run.begun()).toBe(false);
+    expect(() => run.join()).toThrow('never began');
   });
 
   it("reports the error a step threw there, as the caller's", () => {

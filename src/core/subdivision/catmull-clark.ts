@@ -27,6 +27,7 @@ import type { Operation } from '../operation.js';
 import { compactAtOnce, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
 import { handOver, noIds, startHelper, type TopologyStep } from './helper-thread.js';
+import { joinSharedFan, prepareSharedFan, sharedFanWork } from './shared-fan.js';
 import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
 
 /**
@@ -49,7 +50,8 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   // reserve memory: one quad per face corner, at most one corner per halfedge (exactly so when
   // the mesh is closed; memory reserved and never written costs nothing). Straight through, a
   // helper thread (when there is one) does the topology steps after the face points in the new
-  // arrays, while this one works out the new positions from the old ones
+  // arrays while this one works out the new positions from the old ones, then joins the helper in
+  // connecting the face points
   const helper = startHelper(mesh, listIds);
   // what the stencils read: the old arrays, which the helper leaves alone (stepping, no view is
   // kept, so the old arrays can go while the phases wait)
@@ -58,7 +60,8 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
 
   // compute face vertices (vertex V + f for face f)
   const facePoints = addFacePoints(mesh, 'all', listIds);
-  const join = handOver(helper, mesh, 'catmull-clark', V);
+  const fanWork = helper === null ? undefined : sharedFanWork(F, helper.memory);
+  const handed = handOver(helper, mesh, 'catmull-clark', V, fanWork);
   yield {
     name: 'add face points',
     explanation:
@@ -73,7 +76,11 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   // split edges at their edge points (vertex V + F + e for edge e), placed first while each edge
   // still joins its two ends
   for (const a of attributes) placeEdgePoints(old, a.data, E, V, V + F);
-  const helped = join();
+  const helped = handed.begun();
+  if (helped) {
+    joinSharedFan(mesh, V, 2, fanWork!);
+    handed.finish();
+  }
   const step = (i: number) => (helped ? noIds : catmullClarkSteps[i](mesh, listIds, V));
   yield {
     name: 'split every edge at its edge point',
@@ -107,7 +114,11 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
 /** The topology of a level after the face points, step by step: split every edge, connect the face points (vertex V + f for face f). */
 export const catmullClarkSteps: readonly TopologyStep[] = [
   (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, true),
-  (mesh, listIds, V) => fanFaces(mesh, 'all', V, 2, listIds),
+  (mesh, listIds, V, fanWork) => {
+    if (fanWork === undefined) return fanFaces(mesh, 'all', V, 2, listIds);
+    prepareSharedFan(mesh, V, 2, fanWork);
+    return noIds;
+  },
 ];
 
 /**

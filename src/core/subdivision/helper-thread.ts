@@ -19,8 +19,11 @@ import type { TopologyChange } from './topology.js';
 /** The schemes whose topology steps a helper can run (see `topology-task.ts`). */
 export type HelpedScheme = 'loop' | 'catmull-clark';
 
-/** One of a scheme's topology steps: `oldVertices` is the vertex count when the level began. */
-export type TopologyStep = (mesh: HalfedgeMesh, listIds: boolean, oldVertices: number) => TopologyChange;
+/**
+ * One of a scheme's topology steps: `oldVertices` is the vertex count when the level began;
+ * `fanWork`, on the helper, the state of a step it shares with the calling thread (`shared-fan.ts`).
+ */
+export type TopologyStep = (mesh: HalfedgeMesh, listIds: boolean, oldVertices: number, fanWork?: Int32Array) => TopologyChange;
 
 /** A level's topology steps, on the mesh's own arrays in shared memory. */
 export interface TopologyTask {
@@ -28,6 +31,8 @@ export interface TopologyTask {
   /** The vertex count when the level began. */
   oldVertices: number;
   mesh: SerializedMesh;
+  /** The state of the connecting of face points, which the calling thread joins (`shared-fan.ts`). */
+  fanWork?: Int32Array;
 }
 
 export interface HelperThread {
@@ -43,11 +48,23 @@ export interface HelperRun {
   /** Gives the helper its task. */
   post(task: TopologyTask): void;
   /**
-   * Waits for the task and gives the slot counts it left, or null when the helper had not begun
-   * it (or had none): the task is then called off, and the caller runs the steps.
+   * Whether the helper has begun its task. If it has not (or has none), the task is called off
+   * and the caller runs the steps.
+   */
+  begun(): boolean;
+  /**
+   * Waits for the task the helper began, and gives the slot counts it left.
    * @throws the helper's error when a step failed there.
    */
-  join(): SlotCounts | null;
+  join(): SlotCounts;
+}
+
+/** The steps a level handed over. */
+export interface HandedSteps {
+  /** Whether the helper has begun them; if not, they are called off, and the caller does them. */
+  begun(): boolean;
+  /** Waits for the helper to finish the steps it began, and takes the slot counts they left. */
+  finish(): void;
 }
 
 /** What a step the helper did reports: nothing, as a level run straight through lists no ids. */
@@ -70,18 +87,18 @@ export function startHelper(mesh: HalfedgeMesh, listIds: boolean): HelperRun | n
 
 /**
  * Hands the level's remaining topology steps to the helper, when every array they write is in its
- * memory (an array that already had room was not grown into it). The returned function waits for
- * the helper and says whether it did the steps; false: the caller does them.
+ * memory (an array that already had room was not grown into it).
  */
-export function handOver(run: HelperRun | null, mesh: HalfedgeMesh, scheme: HelpedScheme, oldVertices: number): () => boolean {
-  if (run !== null && sharesEveryArray(mesh)) run.post({ scheme, oldVertices, mesh: shareMesh(mesh) });
-  return () => {
-    const slots = run?.join() ?? null;
-    if (slots === null) return false;
-    mesh.vertexSlots = slots.vertexSlots;
-    mesh.edgeSlots = slots.edgeSlots;
-    mesh.faceSlots = slots.faceSlots;
-    return true;
+export function handOver(run: HelperRun | null, mesh: HalfedgeMesh, scheme: HelpedScheme, oldVertices: number, fanWork?: Int32Array): HandedSteps {
+  if (run !== null && sharesEveryArray(mesh)) run.post({ scheme, oldVertices, mesh: shareMesh(mesh), fanWork });
+  return {
+    begun: () => run?.begun() ?? false,
+    finish() {
+      const slots = run!.join();
+      mesh.vertexSlots = slots.vertexSlots;
+      mesh.edgeSlots = slots.edgeSlots;
+      mesh.faceSlots = slots.faceSlots;
+    },
   };
 }
 

@@ -51,7 +51,7 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   // kept, so the old arrays can go while the phases wait)
   const old = helper === null ? mesh : mesh.view();
   mesh.reserve({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F }, helper?.memory);
-  const join = handOver(helper, mesh, 'loop', V);
+  const handed = handOver(helper, mesh, 'loop', V);
 
   // compute the new positions while the old one-rings are intact. Straight through, no phase shows
   // the edge points at the midpoints first: they go where they end (vertex V + e for edge e), as
@@ -60,7 +60,8 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   const edgePoints = listIds ? attributes.map(() => new Float64Array(3 * E)) : null;
   attributes.forEach((a, i) => loopEdgePoints(old, a.data, edgePoints?.[i] ?? a.data, edgePoints ? 0 : V));
   const vertexPoints = attributes.map((a) => loopVertexPoints(old, a.data));
-  const helped = join();
+  const helped = handed.begun();
+  if (helped) handed.finish();
   const step = (i: number) => (helped ? noIds : loopSteps[i](mesh, listIds, V));
 
   // split edges

@@ -15,6 +15,6 @@ export function runTopologyTask(task: TopologyTask): SlotCounts {
   if (!Object.hasOwn(stepsOf, task.scheme)) throw new Error(`no topology steps for '${task.scheme}'`);
   const steps = stepsOf[task.scheme];
   const mesh = deserializeMesh(task.mesh);
-  for (const step of steps) step(mesh, false, task.oldVertices);
+  for (const step of steps) step(mesh, false, task.oldVertices, task.fanWork);
   return { vertexSlots: mesh.vertexSlots, edgeSlots: mesh.edgeSlots, faceSlots: mesh.faceSlots };
 }

@@ -38,7 +38,7 @@ export function range(listIds: boolean, start: number, end: number): Int32Array 
 }
 
 /** The first id of each kind that `appendSlots` added. */
-interface FirstIds {
+export interface FirstIds {
   vertex: number;
   edge: number;
   face: number;
@@ -346,13 +346,39 @@ export function fanFaces(mesh: HalfedgeMesh, faces: Int32Array | 'all', firstCen
   const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
   const spokes = cornersOf(mesh, faces) / stride;
   const first = appendSlots(mesh, 0, spokes, spokes - count);
+  const rewired = listIds ? new Int32Array(stride * spokes) : null; // the faces' own halfedges, all re-linked
+  fanRange(mesh, { faceAt, begin: 0, end: count, spoke: 0 }, first, firstCentre, stride, rewired);
+  return {
+    created: {
+      edges: range(listIds, first.edge, first.edge + spokes),
+      faces: range(listIds, first.face, first.face + spokes - count),
+    },
+    rewired: {
+      halfedges: rewired ?? undefined,
+      vertices: range(listIds, firstCentre, firstCentre + count), // isolated until now
+      faces: !listIds ? undefined : faces === 'all' ? idRange(0, count) : faces,
+    },
+  };
+}
+
+/** The listed faces `begin … end − 1` of a fan, the first of them with spoke number `spoke` (the spokes of the faces before). */
+export interface FanRange {
+  faceAt: (i: number) => number;
+  begin: number;
+  end: number;
+  spoke: number;
+}
+
+/**
+ * `fanFaces` for a range of its faces, in slots already appended from `first` on. Ranges write
+ * disjoint slots (a face's own halfedges, its spokes and its pieces), so two threads may fan two
+ * ranges at once (see `shared-fan.ts`).
+ */
+export function fanRange(mesh: HalfedgeMesh, { faceAt, begin, end, spoke }: FanRange, first: FirstIds, firstCentre: number, stride: number, rewired: Int32Array | null): void {
   const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
   const copyFaceAttributes = mesh.faceAttributes.size > 0;
-  const rewired = listIds ? new Int32Array(stride * spokes) : null; // the faces' own halfedges, all re-linked
-
-  let spoke = 0; // spokes made so far: the next one is edge first.edge + spoke
-  let r = 0;
-  for (let i = 0; i < count; i++) {
+  let r = stride * spoke;
+  for (let i = begin; i < end; i++) {
     const f = faceAt(i);
     const centre = firstCentre + i;
     const firstSpoke = 2 * (first.edge + spoke);
@@ -388,17 +414,6 @@ export function fanFaces(mesh: HalfedgeMesh, faces: Int32Array | 'all', firstCen
     } while (g !== start);
     vHalfedge[centre] = firstSpoke;
   }
-  return {
-    created: {
-      edges: range(listIds, first.edge, first.edge + spokes),
-      faces: range(listIds, first.face, first.face + spokes - count),
-    },
-    rewired: {
-      halfedges: rewired ?? undefined,
-      vertices: range(listIds, firstCentre, firstCentre + count), // isolated until now
-      faces: !listIds ? undefined : faces === 'all' ? idRange(0, count) : faces,
-    },
-  };
 }
 
 /** The number of halfedges inside the listed faces (or all faces): the sum of their degrees. */

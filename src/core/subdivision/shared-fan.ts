@@ -1,0 +1,98 @@
+/**
+ * Connecting the face points of every face (`fanFaces` on all faces) on two threads at once: the
+ * faces go in chunks, and each thread takes the next chunk until none is left. Chunks write
+ * disjoint slots, and each chunk's first spoke is counted before any is taken, so the mesh is the
+ * one `fanFaces` makes on one thread, whichever thread takes which chunk.
+ *
+ * The helper thread (see `helper-thread.ts`) appends the slots and counts the spokes
+ * (`prepareSharedFan`) once it has split the edges; the calling thread joins in when its stencils
+ * are done (`joinSharedFan`). Their shared state is one `Int32Array` in shared memory.
+ */
+import type { HalfedgeMesh } from '../mesh.js';
+import type { Memory } from '../memory.js';
+import { appendSlots, fanRange } from './topology.js';
+
+/** Faces per chunk: a chunk takes a millisecond or two, so the threads finish close together. */
+const CHUNK_BITS = 14;
+const CHUNK = 1 << CHUNK_BITS;
+
+// the shared state: [state, next chunk, chunks done, faces, first edge, first face, then each
+// chunk's first spoke, and the spokes of all]
+const STATE = 0;
+const NEXT = 1;
+const DONE = 2;
+const FACES = 3;
+const FIRST_EDGE = 4;
+const FIRST_FACE = 5;
+const SPOKES = 6;
+
+const PREPARING = 0;
+const READY = 1;
+const FAILED = -1;
+
+const chunksOf = (faces: number) => (faces + CHUNK - 1) >> CHUNK_BITS;
+
+/** The shared state for fanning `faces` faces, in `memory`. */
+export function sharedFanWork(faces: number, memory: Memory): Int32Array {
+  const work = new Int32Array(memory(4 * (SPOKES + chunksOf(faces) + 1)));
+  work[FACES] = faces;
+  return work;
+}
+
+/**
+ * The helper's part: appends the slots and counts each chunk's spokes (one pass over the
+ * halfedges, as `fanFaces` counts them), lets the other thread in, fans chunks, and waits until
+ * every chunk is done. Says FAILED if it throws, so the other thread does not wait for it.
+ */
+export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, stride: number, work: Int32Array): void {
+  try {
+    const faces = work[FACES];
+    const chunks = chunksOf(faces);
+    const { heFace } = mesh;
+    const halfedges = mesh.halfedgeSlots;
+    for (let h = 0; h < halfedges; h++) {
+      const f = heFace[h];
+      if (f !== -1) work[SPOKES + (f >> CHUNK_BITS) + 1]++;
+    }
+    work[SPOKES] = 0;
+    for (let c = 1; c <= chunks; c++) work[SPOKES + c] = work[SPOKES + c - 1] + work[SPOKES + c] / stride;
+    const spokes = work[SPOKES + chunks];
+    const first = appendSlots(mesh, 0, spokes, spokes - faces);
+    work[FIRST_EDGE] = first.edge;
+    work[FIRST_FACE] = first.face;
+  } catch (error) {
+    Atomics.store(work, STATE, FAILED);
+    Atomics.notify(work, STATE);
+    throw error;
+  }
+  Atomics.store(work, STATE, READY);
+  Atomics.notify(work, STATE);
+  fanChunks(mesh, firstCentre, stride, work);
+  const chunks = chunksOf(work[FACES]);
+  for (let done = Atomics.load(work, DONE); done < chunks; done = Atomics.load(work, DONE)) Atomics.wait(work, DONE, done);
+}
+
+/**
+ * The calling thread's part, once the helper has begun: waits until the slots are appended, then
+ * fans chunks until none is left. False when the helper failed first (its error comes with `join`).
+ */
+export function joinSharedFan(mesh: HalfedgeMesh, firstCentre: number, stride: number, work: Int32Array): boolean {
+  while (Atomics.load(work, STATE) === PREPARING) Atomics.wait(work, STATE, PREPARING);
+  if (Atomics.load(work, STATE) === FAILED) return false;
+  fanChunks(mesh, firstCentre, stride, work);
+  return true;
+}
+
+/** Fans the next chunk not yet taken, until none is left; counts each one done. */
+function fanChunks(mesh: HalfedgeMesh, firstCentre: number, stride: number, work: Int32Array): void {
+  const faces = work[FACES];
+  const chunks = chunksOf(faces);
+  const first = { vertex: -1, edge: work[FIRST_EDGE], face: work[FIRST_FACE] };
+  const faceAt = (i: number) => i;
+  for (let c = Atomics.add(work, NEXT, 1); c < chunks; c = Atomics.add(work, NEXT, 1)) {
+    const range = { faceAt, begin: c << CHUNK_BITS, end: Math.min(faces, (c + 1) << CHUNK_BITS), spoke: work[SPOKES + c] };
+    fanRange(mesh, range, first, firstCentre, stride, null);
+    Atomics.add(work, DONE, 1);
+    Atomics.notify(work, DONE);
+  }
+}
