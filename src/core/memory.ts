@@ -4,9 +4,10 @@
  */
 export type Memory = (bytes: number) => ArrayBufferLike;
 
-export const plainMemory: Memory = (bytes) => new ArrayBuffer(bytes);
+const plainMemory: Memory = (bytes) => new ArrayBuffer(bytes);
 
-type TypedArray = Int8Array | Uint8Array | Int16Array | Uint16Array | Int32Array | Uint32Array | Float32Array | Float64Array;
+/** The arrays of a mesh and its attributes. */
+export type TypedArray = Int8Array | Uint8Array | Int16Array | Uint16Array | Int32Array | Uint32Array | Float32Array | Float64Array;
 
 /** A typed array of `length` zeros, of the same type as `like`, in `memory`. */
 export function newArrayLike<T extends TypedArray>(like: T, length: number, memory: Memory = plainMemory): T {

@@ -11,16 +11,14 @@
  * order takes 291 ms against 317 (medians of 10 by turns).
  * An array with room to spare (deleted slots, or capacity for growth) gets a new one that fits.
  */
-
-/** The arrays of a mesh and its attributes. */
-type ItemArray = Int8Array | Uint8Array | Int16Array | Uint16Array | Int32Array | Uint32Array | Float32Array | Float64Array;
+import { newArrayLike, type TypedArray } from './memory.js';
 
 /** One buffer lent to each array renumbered in place in turn, grown when one needs more. */
 export class Scratch {
   private buffer = new ArrayBuffer(0);
 
   /** A view of `length` items of the same type as `like`, over the scratch's memory. */
-  viewLike<T extends ItemArray>(like: T, length: number): T {
+  viewLike<T extends TypedArray>(like: T, length: number): T {
     const bytes = length * like.BYTES_PER_ELEMENT;
     if (bytes > this.buffer.byteLength) this.buffer = new ArrayBuffer(bytes);
     return new (like.constructor as new (buffer: ArrayBuffer, offset: number, length: number) => T)(this.buffer, 0, length);
@@ -32,9 +30,9 @@ export class Scratch {
  * with `ids`, the numbers are ids renumbered through it on the way (-1, none, stays -1). Returns
  * `data` itself, renumbered in place, when it holds `count` items already; else a new array.
  */
-export function permuteItems<T extends ItemArray>(data: T, itemSize: number, map: Int32Array, count: number, scratch: Scratch, ids?: Int32Array): T {
+export function permuteItems<T extends TypedArray>(data: T, itemSize: number, map: Int32Array, count: number, scratch: Scratch, ids?: Int32Array): T {
   const inPlace = data.length === count * itemSize;
-  const next = inPlace ? scratch.viewLike(data, data.length) : new (data.constructor as new (length: number) => T)(count * itemSize);
+  const next = inPlace ? scratch.viewLike(data, data.length) : newArrayLike(data, count * itemSize);
   if (ids) scatterIds(data, next, map, ids);
   else scatterItems(data, next, map, itemSize);
   if (!inPlace) return next;
@@ -48,20 +46,20 @@ export function permuteItems<T extends ItemArray>(data: T, itemSize: number, map
  * Moving the flags as items would give the same zeros, but scattering them made renumbering the
  * 1.3M-triangle icosphere 20 ms slower (335–347 against 313–329 ms).
  */
-export function clearedFlags<T extends ItemArray>(flags: T, count: number): T {
-  if (flags.length !== count) return new (flags.constructor as new (length: number) => T)(count);
+export function clearedFlags<T extends TypedArray>(flags: T, count: number): T {
+  if (flags.length !== count) return newArrayLike(flags, count);
   flags.fill(0);
   return flags;
 }
 
-function scatterIds(from: ItemArray, to: ItemArray, map: Int32Array, ids: Int32Array): void {
+function scatterIds(from: TypedArray, to: TypedArray, map: Int32Array, ids: Int32Array): void {
   for (let i = 0; i < map.length; i++) {
     const j = map[i];
     if (j >= 0) to[j] = from[i] < 0 ? from[i] : ids[from[i]];
   }
 }
 
-function scatterItems(from: ItemArray, to: ItemArray, map: Int32Array, itemSize: number): void {
+function scatterItems(from: TypedArray, to: TypedArray, map: Int32Array, itemSize: number): void {
   for (let i = 0; i < map.length; i++) {
     const j = map[i];
     if (j >= 0) for (let k = 0; k < itemSize; k++) to[j * itemSize + k] = from[i * itemSize + k];

@@ -7,6 +7,7 @@
 import { type AttributeArray, type AttributeType, attributeTypeOf, type Interpolation } from './attributes.js';
 import { InvalidInputError } from './errors.js';
 import { HalfedgeMesh } from './mesh.js';
+import { newArrayLike } from './memory.js';
 import { attributeSetOf, type ElementKind, elementKinds, lengthsByKind, type MeshArrayName, meshArrays, roomByKind, setMeshArray, slotCount } from './mesh-arrays.js';
 
 export interface SerializedAttribute {
@@ -38,7 +39,7 @@ export function serializeMesh(mesh: HalfedgeMesh, spare = 0): SerializedMesh {
   const extra = lengthsByKind({ vertices: spare, edges: spare, faces: spare });
   return serializedForm(mesh, (array, kind, itemSize) => {
     const used = slotCount(mesh, kind) * itemSize;
-    const next = new (array.constructor as new (n: number) => typeof array)(used + extra[kind] * itemSize);
+    const next = newArrayLike(array, used + extra[kind] * itemSize);
     (next as Int32Array).set(array.subarray(0, used) as Int32Array);
     return next;
   });

@@ -26,7 +26,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { compactAtOnce, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
-import { handOver, noIds, startHelper, type TopologyStep } from './helper-thread.js';
+import { growForLevel, handOver, noIds, type TopologyStep } from './helper-thread.js';
 import { joinSharedFan, prepareSharedFan, sharedFanWork } from './shared-fan.js';
 import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
 
@@ -52,11 +52,7 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   // helper thread (when there is one) does the topology steps after the face points in the new
   // arrays while this one works out the new positions from the old ones, then joins the helper in
   // connecting the face points
-  const helper = startHelper(mesh, listIds);
-  // what the stencils read: the old arrays, which the helper leaves alone (stepping, no view is
-  // kept, so the old arrays can go while the phases wait)
-  const old = helper === null ? mesh : mesh.view();
-  mesh.reserve({ vertices: V + F + E, edges: 4 * E, faces: 2 * E }, helper?.memory);
+  const { helper, old } = growForLevel(mesh, listIds, { vertices: V + F + E, edges: 4 * E, faces: 2 * E });
 
   // compute face vertices (vertex V + f for face f)
   const facePoints = addFacePoints(mesh, 'all', listIds);

@@ -11,7 +11,7 @@
  * calling thread, as it also does when the helper has not begun by the time the stencils are done.
  */
 import { attributeSetOf, elementKinds, meshArrays, type SlotCounts } from '../mesh-arrays.js';
-import type { HalfedgeMesh } from '../mesh.js';
+import type { HalfedgeMesh, MeshCapacity } from '../mesh.js';
 import { isShared, type Memory } from '../memory.js';
 import { type SerializedMesh, shareMesh } from '../serialize.js';
 import type { TopologyChange } from './topology.js';
@@ -78,11 +78,17 @@ export function useHelperThread(helper: HelperThread | null): void {
 }
 
 /**
- * Starts the helper for a level of `mesh` run straight through, before the level grows the mesh
- * into its memory; null for a level stepped phase by phase, a mesh too small, or no helper.
+ * Grows the mesh for a level to `capacity`. Run straight through with a helper that takes a mesh
+ * this size, the helper is started first (it takes a while to begin) and the mesh grows into its
+ * memory. Returns the helper (or null) and the mesh the stencils read: with a helper, a view of the
+ * old arrays, which the helper leaves alone; else the mesh itself (stepping, no view is kept, so
+ * the old arrays can go while the phases wait).
  */
-export function startHelper(mesh: HalfedgeMesh, listIds: boolean): HelperRun | null {
-  return listIds || installed === null || mesh.faceSlots < installed.minFaces ? null : installed.start();
+export function growForLevel(mesh: HalfedgeMesh, listIds: boolean, capacity: MeshCapacity): { helper: HelperRun | null; old: HalfedgeMesh } {
+  const helper = listIds || installed === null || mesh.faceSlots < installed.minFaces ? null : installed.start();
+  const old = helper === null ? mesh : mesh.view();
+  mesh.reserve(capacity, helper?.memory);
+  return { helper, old };
 }
 
 /**

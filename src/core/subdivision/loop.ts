@@ -21,7 +21,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
-import { handOver, noIds, startHelper, type TopologyStep } from './helper-thread.js';
+import { growForLevel, handOver, noIds, type TopologyStep } from './helper-thread.js';
 import { cutCorners, range, splitEdges } from './topology.js';
 import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
@@ -46,11 +46,7 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
 
   // reserve memory; straight through, a helper thread (when there is one) does the topology steps
   // in the new arrays while this one works out the new positions from the old ones
-  const helper = startHelper(mesh, listIds);
-  // what the stencils read: the old arrays, which the helper leaves alone (stepping, no view is
-  // kept, so the old arrays can go while the phases wait)
-  const old = helper === null ? mesh : mesh.view();
-  mesh.reserve({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F }, helper?.memory);
+  const { helper, old } = growForLevel(mesh, listIds, { vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
   const handed = handOver(helper, mesh, 'loop', V);
 
   // compute the new positions while the old one-rings are intact. Straight through, no phase shows
