@@ -61,7 +61,7 @@ function everything(mesh: HalfedgeMesh) {
 }
 
 /** The mesh after `levels` levels, on this thread alone and with the helper; and how often it helped. */
-function bothWays(make: () => HalfedgeMesh, scheme: 'loop' | 'catmull-clark', levels: number) {
+function bothWays(make: () => HalfedgeMesh, scheme: Scheme, levels: number) {
   useHelperThread(null);
   const alone = make();
   subdivide(alone, scheme, levels);
@@ -75,9 +75,14 @@ function bothWays(make: () => HalfedgeMesh, scheme: 'loop' | 'catmull-clark', le
 
 afterAll(() => useHelperThread(null));
 
-const fixtures: Array<[string, 'loop' | 'catmull-clark', () => HalfedgeMesh]> = [
+/** The schemes a helper takes the topology of: Butterfly's is Loop's. */
+type Scheme = 'loop' | 'butterfly' | 'catmull-clark';
+
+const fixtures: Array<[string, Scheme, () => HalfedgeMesh]> = [
   ['a closed sphere of triangles', 'loop', () => withAttributes(triangulate(uvSphere(8, 12)))],
   ['an open grid of triangles', 'loop', () => withAttributes(grid(6, 5))],
+  ['a closed sphere of triangles', 'butterfly', () => withAttributes(triangulate(uvSphere(8, 12)))],
+  ['an open grid of triangles', 'butterfly', () => withAttributes(grid(6, 5))],
   ['a torus of quads', 'catmull-clark', () => withAttributes(torus(10, 8))],
   // 19,200 quads, then 76,800: faces in two chunks and in five, connected by both threads
   ['a torus of quads in several chunks', 'catmull-clark', () => withAttributes(torus(160, 120))],

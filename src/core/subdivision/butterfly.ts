@@ -36,7 +36,9 @@ import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { addScaled, blendedAttributes, storeValues } from './stencil.js';
-import { cutCorners, range, splitEdges } from './topology.js';
+import { growForLevel, handOver, noIds } from './helper-thread.js';
+import { loopSteps } from './loop.js';
+import { range } from './topology.js';
 
 /**
  * One level of Modified Butterfly subdivision, as a steppable operation that edits `mesh` in place.
@@ -56,12 +58,17 @@ export function* butterflyLevel(mesh: HalfedgeMesh, listIds: boolean): Operation
   const E = mesh.edgeSlots;
   const F = mesh.faceSlots;
 
+  // reserve memory; straight through, a helper thread (when there is one) does Loop's topology
+  // steps in the new arrays while this one works out the edge points from the old ones
+  const { helper, old } = growForLevel(mesh, listIds, { vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
+  const handed = handOver(helper, mesh, 'loop', V);
+
   // compute the edge points while the old one-rings are intact
   const attributes = blendedAttributes(mesh);
-  const edgePoints = attributes.map((a) => butterflyEdgePoints(mesh, a.data));
-
-  // reserve memory
-  mesh.reserve({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
+  const edgePoints = attributes.map((a) => butterflyEdgePoints(old, a.data));
+  const helped = handed.begun();
+  if (helped) handed.finish();
+  const step = (i: number) => (helped ? noIds : loopSteps[i](mesh, listIds, V));
 
   // split edges
   yield {
@@ -69,7 +76,7 @@ export function* butterflyLevel(mesh: HalfedgeMesh, listIds: boolean): Operation
     explanation:
       'Each edge gets a new vertex at its midpoint, so every triangle becomes a hexagon whose corners alternate between old and new vertices. ' +
       'Butterfly refines the mesh exactly as Loop does; only where the new points go differs.',
-    ...splitEdges(mesh, 'all', 2, listIds),
+    ...step(0),
   };
 
   // split faces
@@ -78,7 +85,7 @@ export function* butterflyLevel(mesh: HalfedgeMesh, listIds: boolean): Operation
     explanation:
       'Three new edges join the edge points of each face, cutting off its corners: one triangle becomes four. ' +
       'The surface is still the old flat one, with every old vertex where it was.',
-    ...cutCorners(mesh, listIds),
+    ...step(1),
   };
 
   // place the new vertices

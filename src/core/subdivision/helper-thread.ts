@@ -16,7 +16,7 @@ import { isShared, type Memory } from '../memory.js';
 import { type SerializedMesh, shareMesh } from '../serialize.js';
 import type { TopologyChange } from './topology.js';
 
-/** The schemes whose topology steps a helper can run (see `topology-task.ts`). */
+/** The schemes whose topology steps a helper can run (see `topology-task.ts`); Butterfly hands over Loop's. */
 export type HelpedScheme = 'loop' | 'catmull-clark';
 
 /**
