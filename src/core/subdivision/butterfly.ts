@@ -33,6 +33,7 @@
  * Counts after one level, as Loop: V' = V + E, E' = 2E + 3F, F' = 4F.
  */
 import type { HalfedgeMesh } from '../mesh.js';
+import { zeros } from '../memory.js';
 import type { Operation } from '../operation.js';
 import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { addScaled, blendedAttributes, storeValues } from './stencil.js';
@@ -104,8 +105,8 @@ export function* butterflyLevel(mesh: HalfedgeMesh, listIds: boolean): Operation
 function butterflyEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64Array {
   const { heNext, hePrev, heVertex, heFace, vHalfedge } = mesh;
   const E = mesh.edgeSlots;
-  const out = new Float64Array(3 * E);
-  const valence = new Int32Array(mesh.vertexSlots);
+  const out = zeros(Float64Array, 3 * E);
+  const valence = zeros(Int32Array, mesh.vertexSlots);
   for (let h = 0; h < 2 * E; h++) valence[heVertex[h]]++;
   const interior = (v: number) => heFace[vHalfedge[v]] !== -1;
   let o = 0;

@@ -11,6 +11,7 @@
  */
 import type { Attribute, AttributeArray } from '../attributes.js';
 import type { HalfedgeMesh } from '../mesh.js';
+import { zeros } from '../memory.js';
 
 /** A vertex attribute the weights apply to. */
 export interface BlendedAttribute extends Attribute {
@@ -58,8 +59,8 @@ export function neighbourSums(
   firstFacePoint = -1,
 ): { sums: Float64Array; valence: Int32Array } {
   const { heVertex, heFace } = mesh;
-  const sums = new Float64Array(3 * vertices);
-  const valence = new Int32Array(vertices);
+  const sums = zeros(Float64Array, 3 * vertices);
+  const valence = zeros(Int32Array, vertices);
   for (let e = 0; e < mesh.edgeSlots; e++) {
     const a = heVertex[2 * e];
     const b = heVertex[2 * e + 1];
