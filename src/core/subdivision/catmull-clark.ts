@@ -28,7 +28,7 @@ import { compactAtOnce, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
 import { growForLevel, handOver, noIds, type TopologyStep } from './helper-thread.js';
 import { joinSharedFan, prepareSharedFan, sharedFanWork } from './shared-fan.js';
-import { addFacePoints, fanFaces, range, splitEdges } from './topology.js';
+import { addFacePoints, addFacePointSlots, fanFaces, placeFacePoints, range, splitEdges } from './topology.js';
 
 /**
  * One level of Catmull-Clark subdivision, as a steppable operation that edits `mesh` in place.
@@ -54,10 +54,12 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   // connecting the face points
   const { helper, old } = growForLevel(mesh, listIds, { vertices: V + F + E, edges: 4 * E, faces: 2 * E });
 
-  // compute face vertices (vertex V + f for face f)
-  const facePoints = addFacePoints(mesh, 'all', listIds);
-  const fanWork = helper === null ? undefined : sharedFanWork(F, helper.memory);
+  // compute face vertices (vertex V + f for face f). With a helper, only their slots are added
+  // before it takes the arrays over, and their places after, from the old face loops
+  const facePoints = helper === null ? addFacePoints(mesh, 'all', listIds) : (addFacePointSlots(mesh, F), noIds);
+  const fanWork = helper === null ? undefined : sharedFanWork(mesh, helper.memory);
   const handed = handOver(helper, mesh, 'catmull-clark', V, fanWork);
+  if (helper !== null) placeFacePoints(old, 'all', V);
   yield {
     name: 'add face points',
     explanation:

@@ -4,9 +4,10 @@
  * disjoint slots, and each chunk's first spoke is counted before any is taken, so the mesh is the
  * one `fanFaces` makes on one thread, whichever thread takes which chunk.
  *
- * The helper thread (see `helper-thread.ts`) appends the slots and counts the spokes
- * (`prepareSharedFan`) once it has split the edges; the calling thread joins in when its stencils
- * are done (`joinSharedFan`). Their shared state is one `Int32Array` in shared memory.
+ * The calling thread counts each chunk's spokes from the faces as they are before their sides are
+ * split (`sharedFanWork`); the helper thread (see `helper-thread.ts`) appends the slots once it
+ * has split the edges (`prepareSharedFan`), and the calling thread joins in when its stencils are
+ * done (`joinSharedFan`). Their shared state is one `Int32Array` in shared memory.
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Memory } from '../memory.js';
@@ -32,31 +33,36 @@ const FAILED = -1;
 
 const chunksOf = (faces: number) => (faces + CHUNK - 1) >> CHUNK_BITS;
 
-/** The shared state for fanning `faces` faces, in `memory`. */
-export function sharedFanWork(faces: number, memory: Memory): Int32Array {
-  const work = new Int32Array(memory(4 * (SPOKES + chunksOf(faces) + 1)));
+/**
+ * The shared state for fanning the faces of `mesh`, in `memory`, with each chunk's first spoke
+ * counted now, before the sides are split: a face of n corners is split into 2n sides and joined
+ * to its point by n spokes. One pass over the halfedges, on this thread, whose code is warm, where
+ * the helper, started afresh for each level, would run it cold.
+ */
+export function sharedFanWork(mesh: HalfedgeMesh, memory: Memory): Int32Array {
+  const faces = mesh.faceSlots;
+  const chunks = chunksOf(faces);
+  const work = new Int32Array(memory(4 * (SPOKES + chunks + 1)));
   work[FACES] = faces;
+  const { heFace } = mesh;
+  const halfedges = mesh.halfedgeSlots;
+  for (let h = 0; h < halfedges; h++) {
+    const f = heFace[h];
+    if (f !== -1) work[SPOKES + (f >> CHUNK_BITS) + 1]++;
+  }
+  for (let c = 1; c <= chunks; c++) work[SPOKES + c] += work[SPOKES + c - 1];
   return work;
 }
 
 /**
- * The helper's part: appends the slots and counts each chunk's spokes (one pass over the
- * halfedges, as `fanFaces` counts them), lets the other thread in, fans chunks, and waits until
- * every chunk is done. Says FAILED if it throws, so the other thread does not wait for it.
+ * The helper's part, once it has split the edges: appends the slots, lets the other thread in,
+ * fans chunks, and waits until every chunk is done. Says FAILED if it throws, so the other thread
+ * does not wait for it.
  */
 export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, stride: number, work: Int32Array): void {
   try {
     const faces = work[FACES];
-    const chunks = chunksOf(faces);
-    const { heFace } = mesh;
-    const halfedges = mesh.halfedgeSlots;
-    for (let h = 0; h < halfedges; h++) {
-      const f = heFace[h];
-      if (f !== -1) work[SPOKES + (f >> CHUNK_BITS) + 1]++;
-    }
-    work[SPOKES] = 0;
-    for (let c = 1; c <= chunks; c++) work[SPOKES + c] = work[SPOKES + c - 1] + work[SPOKES + c] / stride;
-    const spokes = work[SPOKES + chunks];
+    const spokes = work[SPOKES + chunksOf(faces)];
     const first = appendSlots(mesh, 0, spokes, spokes - faces);
     work[FIRST_EDGE] = first.edge;
     work[FIRST_FACE] = first.face;

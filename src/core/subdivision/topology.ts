@@ -290,14 +290,32 @@ export function cutCorners(mesh: HalfedgeMesh, listIds: boolean): TopologyChange
  */
 export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', listIds: boolean, oldVertices = Infinity): TopologyChange {
   const count = faces === 'all' ? mesh.faceSlots : faces.length;
-  const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
+  const V = addFacePointSlots(mesh, count);
+  placeFacePoints(mesh, faces, V, oldVertices);
+  return { created: { vertices: range(listIds, V, V + count) }, rewired: {} };
+}
+
+/** Appends `count` isolated vertices, the slots of face points; returns the first. */
+export function addFacePointSlots(mesh: HalfedgeMesh, count: number): number {
   const { vertex: V } = appendSlots(mesh, count, 0, 0);
-  const { heNext, heVertex, fHalfedge, vHalfedge } = mesh;
-  vHalfedge.fill(-1, V, V + count);
+  mesh.vHalfedge.fill(-1, V, V + count);
+  return V;
+}
+
+/**
+ * Gives vertex `first + i` the attributes of the i-th listed face's point: the mean of its corners
+ * (those below `oldVertices`) for a blended attribute, its first corner's value for a copied one.
+ * `mesh` may be a view of the old arrays (`HalfedgeMesh.view`) while another thread rewires the
+ * new ones: its face loops are walked, its attribute sets (the mesh's own) written.
+ */
+export function placeFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', first: number, oldVertices = Infinity): void {
+  const count = faces === 'all' ? mesh.faceSlots : faces.length;
+  const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
+  const { heNext, heVertex, fHalfedge } = mesh;
   for (const attribute of mesh.vertexAttributes) {
     const { data, itemSize: n } = attribute;
     if (!isBlended(attribute)) {
-      for (let i = 0; i < count; i++) copyItem(data, n, V + i, heVertex[fHalfedge[faceAt(i)]]);
+      for (let i = 0; i < count; i++) copyItem(data, n, first + i, heVertex[fHalfedge[faceAt(i)]]);
       continue;
     }
     for (let i = 0; i < count; i++) {
@@ -317,13 +335,12 @@ export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', lis
         }
         h = heNext[h];
       } while (h !== start);
-      const o = 3 * (V + i);
+      const o = 3 * (first + i);
       data[o] = x / degree;
       data[o + 1] = y / degree;
       data[o + 2] = z / degree;
     }
   }
-  return { created: { vertices: range(listIds, V, V + count) }, rewired: {} };
 }
 
 /**
