@@ -87,7 +87,7 @@ export function buildMesh(soup: PolygonSoup, options: BuildOptions = {}): BuildR
   progress(0.5);
 
   // 5. number the halfedges and link each face loop (twin becomes each corner's halfedge)
-  const mesh = linkFaces(kept, pairing.twin, nInputVertices + copyOf.length, entries, span(0.5, 0.7));
+  const mesh = linkFaces(kept, pairing, nInputVertices + copyOf.length, entries, span(0.5, 0.7));
   copyAttributes(soup, kept, mesh, pairing.twin);
   copyOf.forEach((v, i) => mesh.vertexAttributes.copy(nInputVertices + i, v));
   progress(0.7);
@@ -208,19 +208,25 @@ class VertexStamp {
 
 /** In range, at least 3 corners, no vertex twice. */
 function isSimpleFace(indices: PolygonSoup['faceIndices'], s: number, e: number, nV: number, stamp: VertexStamp): boolean {
+  // triangles, most faces of most files, in a few comparisons (small enough to be inlined where
+  // the faces are checked)
+  if (e - s === 3) {
+    const a = indices[s];
+    const b = indices[s + 1];
+    const c = indices[s + 2];
+    return a >= 0 && a < nV && b >= 0 && b < nV && c >= 0 && c < nV && a !== b && b !== c && c !== a;
+  }
+  return isSimplePolygon(indices, s, e, nV, stamp);
+}
+
+function isSimplePolygon(indices: PolygonSoup['faceIndices'], s: number, e: number, nV: number, stamp: VertexStamp): boolean {
   const k = e - s;
   if (k < 3) return false;
   for (let i = s; i < e; i++) {
     const v = indices[i];
     if (!(v >= 0 && v < nV)) return false;
   }
-  // triangles and quads, most faces of most files: compare the corners pairwise
-  if (k === 3) {
-    const a = indices[s];
-    const b = indices[s + 1];
-    const c = indices[s + 2];
-    return a !== b && b !== c && c !== a;
-  }
+  // quads, most of the other faces: compare the corners pairwise
   if (k === 4) {
     const a = indices[s];
     const b = indices[s + 1];
@@ -299,6 +305,8 @@ function identity(n: number): Int32Array {
 interface Pairing {
   /** The corner across the same edge, or -1. */
   twin: Int32Array;
+  /** Corners left without a partner (crowded edges' included, until they are paired again). */
+  unpaired: number;
   /** Pairs whose two corners run the same way (the faces disagree on orientation). */
   sameDirectionPairs: number;
   /** Corners of each edge that has three or more, in corner order. */
@@ -346,6 +354,7 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, entrie
   const twin = new Int32Array(nC).fill(-1);
   const crowded: number[][] = [];
   let sameDirectionPairs = 0;
+  let paired = 0;
   for (let lo = 0; lo < nV; lo++) {
     if ((lo & TICK) === 0) tick(2 * nV + lo, 3 * nV);
     const begin = 2 * bucketStart[lo];
@@ -380,11 +389,12 @@ function pairCorners(corners: IndexArray, starts: IndexArray, nV: number, entrie
       else if (partner !== -1) {
         twin[first] = partner;
         twin[partner] = first;
+        paired += 2;
         if (upper === partnerUpper) sameDirectionPairs++;
       }
     }
   }
-  return { twin, sameDirectionPairs, crowded };
+  return { twin, unpaired: nC - paired, sameDirectionPairs, crowded };
 }
 
 /** Buckets of up to this many corners are paired by comparing each corner with the ones after it. */
@@ -581,11 +591,9 @@ function cornerEdge(kept: KeptFaces, c: number): [number, number] {
  * 0's halfedges are h0, h2, h4, … To spare a second array of corner size, `twin` is overwritten
  * as the pass goes: afterwards `twin[c]` is the halfedge of corner c.
  */
-function linkFaces(kept: KeptFaces, twin: Int32Array, nV: number, entries: Int32Array, tick: Tick = () => {}): HalfedgeMesh {
+function linkFaces(kept: KeptFaces, { twin, unpaired }: Pairing, nV: number, entries: Int32Array, tick: Tick = () => {}): HalfedgeMesh {
   const { corners, starts, faceCount: nF } = kept;
   const nC = starts[nF];
-  let unpaired = 0;
-  for (let c = 0; c < nC; c++) if (twin[c] === -1) unpaired++;
   const nE = (nC + unpaired) / 2;
   if (nE > 0x3fffffff) throw new InvalidInputError(`${nE} edges are more than one mesh can hold`);
 
