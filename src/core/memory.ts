@@ -24,9 +24,10 @@ export function isShared(array: ArrayBufferView): boolean {
  * A new array of `length` zeros to add into (`sums[i] += …`, `count[v]++`), its memory written
  * once, in order, before anything reads it. Fresh memory read first maps the kernel's shared page
  * of zeros, which the first write must then swap for a page of its own; while another thread of
- * the process runs (a level's helper thread), every swap also interrupts that thread to flush what
- * it has cached of the old mapping. Measured on a 1M-quad torus with the helper at work: the
- * neighbour sums of Catmull-Clark took 185–230 ms that way, 40–75 ms in memory written first.
+ * the process runs (a level's helper thread), those swaps slow both threads down, most likely as
+ * each one flushes the other core's cached address mappings. Measured on a 1M-quad torus with the
+ * helper at work: the neighbour sums of Catmull-Clark took 185–230 ms that way, 40–75 ms in
+ * memory written first; plain first writes to fresh memory showed no such cost.
  */
 export function zeros<T extends Float64Array | Int32Array>(Type: new (length: number) => T, length: number): T {
   const array = new Type(length);

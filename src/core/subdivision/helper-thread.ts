@@ -3,7 +3,9 @@
  * old mesh and write different arrays: the topology steps rewire the pointers, the stencils work
  * out the new positions. Given a helper thread, a level grows the mesh into shared memory (it grows
  * every array anyway), hands the steps to the helper, and works out the stencils from the old
- * arrays meanwhile (`HalfedgeMesh.view`).
+ * arrays meanwhile (`HalfedgeMesh.view`). While both threads run, neither reads memory fresh from
+ * the system before writing it (arrays to add into come from `zeros`, see `memory.ts`): such reads
+ * slow both threads, and the stencils ran at a quarter of their speed.
  *
  * The core runs anywhere and starts no thread itself: an environment that can installs a helper
  * with `useHelperThread` (the library's Node entry does, see `src/node/helper-thread.ts`). Without
