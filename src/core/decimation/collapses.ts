@@ -39,6 +39,7 @@
 import { canCollapseEdge, collapseEdgeAt } from '../edits/collapse.js';
 import { PointerWriter } from '../edits/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
+import { zeros } from '../memory.js';
 import type { ElementIds } from '../operation.js';
 import { Candidates } from './candidates.js';
 import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError, sumQuadrics } from './quadric.js';
@@ -283,7 +284,7 @@ export class Decimator {
 function vertexQuadrics(mesh: HalfedgeMesh): Float64Array {
   const { heNext, heVertex, heFace, fHalfedge, fDeleted } = mesh;
   const p = mesh.positions;
-  const q = new Float64Array(QUADRIC_SIZE * mesh.vertexSlots);
+  const q = zeros(Float64Array, QUADRIC_SIZE * mesh.vertexSlots);
   for (let f = 0; f < mesh.faceSlots; f++) {
     if (fDeleted[f]) continue;
     const h0 = fHalfedge[f];
