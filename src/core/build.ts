@@ -208,31 +208,31 @@ class VertexStamp {
 
 /** In range, at least 3 corners, no vertex twice. */
 function isSimpleFace(indices: PolygonSoup['faceIndices'], s: number, e: number, nV: number, stamp: VertexStamp): boolean {
-  // triangles, most faces of most files, in a few comparisons (small enough to be inlined where
-  // the faces are checked)
+  // triangles and quads, most faces of most files, in a few comparisons each (small enough to be
+  // inlined where the faces are checked)
   if (e - s === 3) {
     const a = indices[s];
     const b = indices[s + 1];
     const c = indices[s + 2];
     return a >= 0 && a < nV && b >= 0 && b < nV && c >= 0 && c < nV && a !== b && b !== c && c !== a;
   }
-  return isSimplePolygon(indices, s, e, nV, stamp);
-}
-
-function isSimplePolygon(indices: PolygonSoup['faceIndices'], s: number, e: number, nV: number, stamp: VertexStamp): boolean {
-  const k = e - s;
-  if (k < 3) return false;
-  for (let i = s; i < e; i++) {
-    const v = indices[i];
-    if (!(v >= 0 && v < nV)) return false;
-  }
-  // quads, most of the other faces: compare the corners pairwise
-  if (k === 4) {
+  if (e - s === 4) {
     const a = indices[s];
     const b = indices[s + 1];
     const c = indices[s + 2];
     const d = indices[s + 3];
-    return a !== b && a !== c && a !== d && b !== c && b !== d && c !== d;
+    const inRange = a >= 0 && a < nV && b >= 0 && b < nV && c >= 0 && c < nV && d >= 0 && d < nV;
+    return inRange && a !== b && a !== c && a !== d && b !== c && b !== d && c !== d;
+  }
+  return isSimplePolygon(indices, s, e, nV, stamp);
+}
+
+/** `isSimpleFace` for any number of corners: a stamp per vertex finds one listed twice. */
+function isSimplePolygon(indices: PolygonSoup['faceIndices'], s: number, e: number, nV: number, stamp: VertexStamp): boolean {
+  if (e - s < 3) return false;
+  for (let i = s; i < e; i++) {
+    const v = indices[i];
+    if (!(v >= 0 && v < nV)) return false;
   }
   stamp.next();
   for (let i = s; i < e; i++) if (stamp.seen(indices[i])) return false;
