@@ -37,7 +37,7 @@ import { zeros } from '../memory.js';
 import type { Operation } from '../operation.js';
 import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { addScaled, blendedAttributes, storeValues } from './stencil.js';
-import { growForLevel, handOver, noIds } from './helper-thread.js';
+import { growForLevel, handOver } from './helper-thread.js';
 import { loopSteps } from './loop.js';
 import { range } from './topology.js';
 
@@ -67,9 +67,7 @@ export function* butterflyLevel(mesh: HalfedgeMesh, listIds: boolean): Operation
   // compute the edge points while the old one-rings are intact
   const attributes = blendedAttributes(mesh);
   const edgePoints = attributes.map((a) => butterflyEdgePoints(old, a.data));
-  const helped = handed.begun();
-  if (helped) handed.finish();
-  const step = (i: number) => (helped ? noIds : loopSteps[i](mesh, listIds, V));
+  const step = handed.take(loopSteps, listIds);
 
   // split edges
   yield {

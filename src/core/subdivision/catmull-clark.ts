@@ -27,7 +27,7 @@ import type { Operation } from '../operation.js';
 import { compactAtOnce, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
 import { growForLevel, handOver, noIds, type TopologyStep } from './helper-thread.js';
-import { joinSharedFan, prepareSharedFan, sharedFanWork } from './shared-fan.js';
+import { prepareSharedFan, sharedFanWork } from './shared-fan.js';
 import { addFacePoints, addFacePointSlots, fanFaces, placeFacePoints, range, splitEdges } from './topology.js';
 
 /**
@@ -74,12 +74,7 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   // split edges at their edge points (vertex V + F + e for edge e), placed first while each edge
   // still joins its two ends
   for (const a of attributes) placeEdgePoints(old, a.data, E, V, V + F);
-  const helped = handed.begun();
-  if (helped) {
-    joinSharedFan(mesh, V, 2, fanWork!);
-    handed.finish();
-  }
-  const step = (i: number) => (helped ? noIds : catmullClarkSteps[i](mesh, listIds, V));
+  const step = handed.take(catmullClarkSteps, listIds);
   yield {
     name: 'split every edge at its edge point',
     explanation:
@@ -114,7 +109,7 @@ export const catmullClarkSteps: readonly TopologyStep[] = [
   (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, true),
   (mesh, listIds, V, fanWork) => {
     if (fanWork === undefined) return fanFaces(mesh, 'all', V, 2, listIds);
-    prepareSharedFan(mesh, V, 2, fanWork);
+    prepareSharedFan(mesh, V, fanWork);
     return noIds;
   },
 ];

@@ -16,6 +16,7 @@ import { attributeSetOf, elementKinds, meshArrays, type SlotCounts } from '../me
 import type { HalfedgeMesh, MeshCapacity } from '../mesh.js';
 import { isShared, type Memory } from '../memory.js';
 import { type SerializedMesh, shareMesh } from '../serialize.js';
+import { joinSharedFan } from './shared-fan.js';
 import type { TopologyChange } from './topology.js';
 
 /** The schemes whose topology steps a helper can run (see `topology-task.ts`); Butterfly hands over Loop's. */
@@ -63,10 +64,12 @@ export interface HelperRun {
 
 /** The steps a level handed over. */
 export interface HandedSteps {
-  /** Whether the helper has begun them; if not, they are called off, and the caller does them. */
-  begun(): boolean;
-  /** Waits for the helper to finish the steps it began, and takes the slot counts they left. */
-  finish(): void;
+  /**
+   * Once the stencils are done: when the helper has begun the steps, waits for them (joining it in
+   * connecting the face points, when it shares that) and takes the slot counts they left, and each
+   * step then lists nothing; when it has not, they are called off, and each runs here.
+   */
+  take(steps: readonly TopologyStep[], listIds: boolean): (i: number) => TopologyChange;
 }
 
 /** What a step the helper did reports: nothing, as a level run straight through lists no ids. */
@@ -100,12 +103,16 @@ export function growForLevel(mesh: HalfedgeMesh, listIds: boolean, capacity: Mes
 export function handOver(run: HelperRun | null, mesh: HalfedgeMesh, scheme: HelpedScheme, oldVertices: number, fanWork?: Int32Array): HandedSteps {
   if (run !== null && sharesEveryArray(mesh)) run.post({ scheme, oldVertices, mesh: shareMesh(mesh), fanWork });
   return {
-    begun: () => run?.begun() ?? false,
-    finish() {
-      const slots = run!.join();
-      mesh.vertexSlots = slots.vertexSlots;
-      mesh.edgeSlots = slots.edgeSlots;
-      mesh.faceSlots = slots.faceSlots;
+    take(steps, listIds) {
+      const helped = run?.begun() ?? false;
+      if (helped) {
+        if (fanWork !== undefined) joinSharedFan(mesh, oldVertices, fanWork);
+        const slots = run!.join();
+        mesh.vertexSlots = slots.vertexSlots;
+        mesh.edgeSlots = slots.edgeSlots;
+        mesh.faceSlots = slots.faceSlots;
+      }
+      return (i) => (helped ? noIds : steps[i](mesh, listIds, oldVertices));
     },
   };
 }

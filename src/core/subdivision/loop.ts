@@ -21,7 +21,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
-import { growForLevel, handOver, noIds, type TopologyStep } from './helper-thread.js';
+import { growForLevel, handOver, type TopologyStep } from './helper-thread.js';
 import { cutCorners, range, splitEdges } from './topology.js';
 import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
@@ -56,9 +56,7 @@ export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
   const edgePoints = listIds ? attributes.map(() => new Float64Array(3 * E)) : null;
   attributes.forEach((a, i) => loopEdgePoints(old, a.data, edgePoints?.[i] ?? a.data, edgePoints ? 0 : V));
   const vertexPoints = attributes.map((a) => loopVertexPoints(old, a.data));
-  const helped = handed.begun();
-  if (helped) handed.finish();
-  const step = (i: number) => (helped ? noIds : loopSteps[i](mesh, listIds, V));
+  const step = handed.take(loopSteps, listIds);
 
   // split edges
   yield {

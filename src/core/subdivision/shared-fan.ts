@@ -33,6 +33,9 @@ const FAILED = -1;
 
 const chunksOf = (faces: number) => (faces + CHUNK - 1) >> CHUNK_BITS;
 
+/** Faces whose sides were split in two: every other corner is joined to the face's point. */
+const STRIDE = 2;
+
 /**
  * The shared state for fanning the faces of `mesh`, in `memory`, with each chunk's first spoke
  * counted now, before the sides are split: a face of n corners is split into 2n sides and joined
@@ -59,7 +62,7 @@ export function sharedFanWork(mesh: HalfedgeMesh, memory: Memory): Int32Array {
  * fans chunks, and waits until every chunk is done. Says FAILED if it throws, so the other thread
  * does not wait for it.
  */
-export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, stride: number, work: Int32Array): void {
+export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): void {
   try {
     const faces = work[FACES];
     const spokes = work[SPOKES + chunksOf(faces)];
@@ -73,7 +76,7 @@ export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, stride
   }
   Atomics.store(work, STATE, READY);
   Atomics.notify(work, STATE);
-  fanChunks(mesh, firstCentre, stride, work);
+  fanChunks(mesh, firstCentre, work);
   const chunks = chunksOf(work[FACES]);
   for (let done = Atomics.load(work, DONE); done < chunks; done = Atomics.load(work, DONE)) Atomics.wait(work, DONE, done);
 }
@@ -82,22 +85,22 @@ export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, stride
  * The calling thread's part, once the helper has begun: waits until the slots are appended, then
  * fans chunks until none is left. False when the helper failed first (its error comes with `join`).
  */
-export function joinSharedFan(mesh: HalfedgeMesh, firstCentre: number, stride: number, work: Int32Array): boolean {
+export function joinSharedFan(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): boolean {
   while (Atomics.load(work, STATE) === PREPARING) Atomics.wait(work, STATE, PREPARING);
   if (Atomics.load(work, STATE) === FAILED) return false;
-  fanChunks(mesh, firstCentre, stride, work);
+  fanChunks(mesh, firstCentre, work);
   return true;
 }
 
 /** Fans the next chunk not yet taken, until none is left; counts each one done. */
-function fanChunks(mesh: HalfedgeMesh, firstCentre: number, stride: number, work: Int32Array): void {
+function fanChunks(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): void {
   const faces = work[FACES];
   const chunks = chunksOf(faces);
   const first = { vertex: -1, edge: work[FIRST_EDGE], face: work[FIRST_FACE] };
   const faceAt = (i: number) => i;
   for (let c = Atomics.add(work, NEXT, 1); c < chunks; c = Atomics.add(work, NEXT, 1)) {
     const range = { faceAt, begin: c << CHUNK_BITS, end: Math.min(faces, (c + 1) << CHUNK_BITS), spoke: work[SPOKES + c] };
-    fanRange(mesh, range, first, firstCentre, stride, null);
+    fanRange(mesh, range, first, firstCentre, STRIDE, null);
     Atomics.add(work, DONE, 1);
     Atomics.notify(work, DONE);
   }
