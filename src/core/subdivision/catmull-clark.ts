@@ -57,8 +57,7 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   // compute face vertices (vertex V + f for face f). With a helper, only their slots are added
   // before it takes the arrays over, and their places after, from the old face loops
   const facePoints = helper === null ? addFacePoints(mesh, 'all', listIds) : (addFacePointSlots(mesh, F), noIds);
-  const fanWork = helper === null ? undefined : sharedFanWork(mesh, helper.memory);
-  const handed = handOver(helper, mesh, 'catmull-clark', V, fanWork);
+  const handed = handOver(helper, mesh, 'catmull-clark', V, sharedFanWork);
   if (helper !== null) placeFacePoints(old, 'all', V);
   yield {
     name: 'add face points',

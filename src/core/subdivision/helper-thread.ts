@@ -98,10 +98,22 @@ export function growForLevel(mesh: HalfedgeMesh, listIds: boolean, capacity: Mes
 
 /**
  * Hands the level's remaining topology steps to the helper, when every array they write is in its
- * memory (an array that already had room was not grown into it).
+ * memory (an array that already had room was not grown into it). `shareFan`, given, makes the
+ * state of the connecting of face points that both threads share, in the helper's memory: only
+ * when the steps are handed over.
  */
-export function handOver(run: HelperRun | null, mesh: HalfedgeMesh, scheme: HelpedScheme, oldVertices: number, fanWork?: Int32Array): HandedSteps {
-  if (run !== null && sharesEveryArray(mesh)) run.post({ scheme, oldVertices, mesh: shareMesh(mesh), fanWork });
+export function handOver(
+  run: HelperRun | null,
+  mesh: HalfedgeMesh,
+  scheme: HelpedScheme,
+  oldVertices: number,
+  shareFan?: (mesh: HalfedgeMesh, memory: Memory) => Int32Array,
+): HandedSteps {
+  let fanWork: Int32Array | undefined;
+  if (run !== null && sharesEveryArray(mesh)) {
+    fanWork = shareFan?.(mesh, run.memory);
+    run.post({ scheme, oldVertices, mesh: shareMesh(mesh), fanWork });
+  }
   return {
     take(steps, listIds) {
       const helped = run?.begun() ?? false;
