@@ -5,18 +5,12 @@
  *
  * Prints one row per case (or, with --json, one JSON object per line): our time, the peer's time
  * in the same run, their ratio, and the peak memory of each. Every side of every case runs in a
- * child process of this script (`--child CASE SIZE SIDE`).
+ * child process of this script (`--child CASE SIZE SIDE`). What is timed is the built package
+ * (`library.ts`): the library is built first, so a run always measures the code as it stands.
  */
 import { execFileSync } from 'node:child_process';
 import { type BenchCase, type BenchResult, combine, measure, type SideResult } from './harness.js';
-import { buildCases } from './cases/build.js';
-import { cutCases } from './cases/cut.js';
 import { runNativeComparison } from './native.js';
-import { parseCases } from './cases/parse.js';
-import { smoothDecimateCases } from './cases/smooth-decimate.js';
-import { subdivisionCases } from './cases/subdivision.js';
-
-const caseGroups: Array<(sizes: number[]) => BenchCase[]> = [buildCases, parseCases, subdivisionCases, cutCases, smoothDecimateCases];
 
 const args = process.argv.slice(2);
 const valueOf = (flag: string) => {
@@ -25,6 +19,16 @@ const valueOf = (flag: string) => {
 };
 
 const childAt = args.indexOf('--child');
+// build the package the cases time (its output to stderr, so that --json's lines stay alone on stdout)
+if (childAt < 0) execFileSync('npm', ['run', '--silent', 'build:lib'], { stdio: ['ignore', 2, 2] });
+// the cases load the built package, so they are loaded after it is built
+const caseGroups: Array<(sizes: number[]) => BenchCase[]> = await Promise.all([
+  import('./cases/build.js').then((m) => m.buildCases),
+  import('./cases/parse.js').then((m) => m.parseCases),
+  import('./cases/subdivision.js').then((m) => m.subdivisionCases),
+  import('./cases/cut.js').then((m) => m.cutCases),
+  import('./cases/smooth-decimate.js').then((m) => m.smoothDecimateCases),
+]);
 if (args.includes('--native')) {
   await runNativeComparison(args);
 } else if (childAt >= 0) {

@@ -2,25 +2,9 @@
 import { BufferAttribute, BufferGeometry } from 'three';
 import { HalfedgeDS } from 'three-mesh-halfedge/build/index.esm.js';
 import type { BenchCase } from '../harness.js';
-import { buildMesh, type BuildResult, meshByteLength, type PolygonSoup, torus, uvSphere } from '../../src/index.js';
-
-/** Slices and stacks of a latitude–longitude sphere with about `faces` triangles. */
-function sphereShape(faces: number): { stacks: number; slices: number } {
-  const slices = Math.round(Math.sqrt(faces));
-  return { stacks: Math.round(faces / (2 * slices)) + 1, slices };
-}
-
-/** A closed latitude–longitude sphere with about `faces` triangles. */
-export function sphereWithFaces(faces: number): PolygonSoup {
-  const { stacks, slices } = sphereShape(faces);
-  return uvSphere(stacks, slices);
-}
-
-/** The exact number of triangles `sphereWithFaces(faces)` has, without making it. */
-export function sphereFaceCount(faces: number): number {
-  const { stacks, slices } = sphereShape(faces);
-  return 2 * slices * (stacks - 1);
-}
+import { type BuildResult, type PolygonSoup, torus } from '../../src/index.js';
+import { buildMesh, meshByteLength } from '../library.js';
+import { sphereFaceCount, sphereWithFaces } from './sphere.js';
 
 export function buildCases(sizes: number[]): BenchCase[] {
   return sizes.flatMap((size): BenchCase[] => {

@@ -3,10 +3,10 @@
  * so it meets no row of vertices: every edge it crosses is split. Each run cuts its own copy of
  * the mesh, made before the timing.
  */
-import { buildMesh } from '../../src/core/build.js';
-import { cutMesh, type KeepSide } from '../../src/core/cut/index.js';
+import type { KeepSide } from '../../src/core/cut/index.js';
 import { type BenchCase, PreparedCopies } from '../harness.js';
-import { sphereFaceCount, sphereWithFaces } from './build.js';
+import { buildMesh, cutMesh } from '../library.js';
+import { sphereFaceCount, sphereWithFaces } from './sphere.js';
 
 const PLANE = [0.1, 0.2, 1, -0.05] as const;
 

@@ -8,8 +8,9 @@
 import { PLYLoader } from 'three/examples/jsm/loaders/PLYLoader.js';
 import type { BenchCase } from '../harness.js';
 import type { PolygonSoup } from '../../src/index.js';
-import { readMesh, type WriteFormat, writeSoup } from '../../src/core/io/index.js';
-import { sphereFaceCount, sphereWithFaces } from './build.js';
+import { type WriteFormat, writeSoup } from '../../src/core/io/index.js';
+import { readMesh } from '../library.js';
+import { sphereFaceCount, sphereWithFaces } from './sphere.js';
 
 type Positions = PolygonSoup['positions'];
 

@@ -15,9 +15,9 @@
 import { BufferAttribute, BufferGeometry } from 'three';
 import { LoopSubdivision } from 'three-subdivide';
 import { type BenchCase, PreparedCopies } from '../harness.js';
-import { buildMesh, torus } from '../../src/index.js';
-import { subdivide } from '../../src/core/subdivision/index.js';
-import { sphereFaceCount, sphereWithFaces } from './build.js';
+import { torus } from '../../src/index.js';
+import { buildMesh, subdivide } from '../library.js';
+import { sphereFaceCount, sphereWithFaces } from './sphere.js';
 
 const peerFaceLimit = 200_000;
 

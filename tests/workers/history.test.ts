@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { buildMesh, meshByteLength, positionsChange, smooth, subdivide, torus, uvSphere, validate } from '../../src/index.js';
 import { History } from '../../src/workers/history.js';
 import { applyEdit } from '../../src/workers/operations.js';
-import { sphereWithFaces } from '../../bench/cases/build.js';
+import { sphereWithFaces } from '../../bench/cases/sphere.js';
 import { meshContents } from '../core/contents.js';
 
 
