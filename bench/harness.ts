@@ -5,7 +5,9 @@
  *
  * Each side of each case runs in a process of its own, so the peak memory reported is that of
  * the case alone (inputs, result and everything in between), and one case's garbage or compiled
- * code cannot slow the next.
+ * code cannot slow the next. The policy is the native harnesses' (`native.ts`), so that the two
+ * benchmarks time alike: inputs prepared outside the timed region, a collection of the garbage
+ * before each run (the children run with `--expose-gc`), one warm-up, then the median.
  */
 
 import type { HalfedgeMesh } from '../src/core/mesh.js';
@@ -20,6 +22,8 @@ export interface BenchCase {
    * belongs here, not in the case's factory.
    */
   prepare?: (side: Side) => void | Promise<void>;
+  /** Before each run of either side (the warm-up too), untimed: e.g. a fresh copy of an input the run changes. */
+  beforeEach?: () => void;
   /** Our implementation. Its result may be inspected by `bytes`. */
   run: () => unknown;
   /** Bytes held by our result (for memory-per-face targets). */
@@ -30,22 +34,33 @@ export interface BenchCase {
 }
 
 /**
- * For a case whose operation changes the mesh it is given: copies made in `prepare`, one for each
- * run (the warm-up included), so the time is the operation's alone, as for the peers, which do not
- * change their input.
+ * For a case whose operation changes the mesh it is given: before each run (`renew`, the case's
+ * `beforeEach`), the last run's copy is let go and collected, then a new copy of the input made,
+ * as the natives' `m = in` frees their last result before copying. Holding a copy for every run
+ * instead kept four more meshes alive through the timing (at a million faces, 400 MB).
  */
-export class PreparedCopies {
-  private copies: HalfedgeMesh[] = [];
+export class FreshCopy {
+  private input: HalfedgeMesh | null = null;
+  private copy: HalfedgeMesh | null = null;
 
-  constructor(private readonly runs: number) {}
-
-  fill(mesh: HalfedgeMesh): void {
-    this.copies = Array.from({ length: this.runs }, () => mesh.clone());
+  /** The mesh every run starts from. */
+  from(mesh: HalfedgeMesh): void {
+    this.input = mesh;
   }
 
+  /** Before a run; nothing on the peer's side, which never takes the mesh. */
+  readonly renew = (): void => {
+    if (!this.input) return;
+    this.copy = null;
+    globalThis.gc?.();
+    this.copy = this.input!.clone();
+  };
+
+  /** This run's copy, to change. */
   take(): HalfedgeMesh {
-    const copy = this.copies.pop();
-    if (!copy) throw new Error('more runs than prepared copies');
+    const copy = this.copy;
+    if (!copy) throw new Error('a run took its copy twice, or before renew()');
+    this.copy = null;
     return copy;
   }
 }
@@ -77,12 +92,19 @@ export type Side = 'ours' | 'peer';
 export async function measure(bench: BenchCase, side: Side): Promise<SideResult> {
   await bench.prepare?.(side);
   const run = side === 'ours' ? bench.run : bench.peer!.run;
-  let result = run(); // warm-up
+  const once = () => {
+    bench.beforeEach?.();
+    globalThis.gc?.(); // the last run's garbage is not this run's cost
+    const start = performance.now();
+    const result = run();
+    return { ms: performance.now() - start, result };
+  };
+  let { result } = once(); // warm-up
   const times: number[] = [];
   for (let i = 0; i < (bench.repeat ?? 5); i++) {
-    const start = performance.now();
-    result = run();
-    times.push(performance.now() - start);
+    const timed = once();
+    times.push(timed.ms);
+    result = timed.result;
   }
   times.sort((a, b) => a - b);
   return {

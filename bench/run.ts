@@ -54,7 +54,7 @@ if (args.includes('--native')) {
 
 /** Runs one side of a case in a child process of this same script. */
 function runSide(bench: BenchCase, size: number, side: 'ours' | 'peer'): SideResult {
-  const output = execFileSync(process.execPath, [...process.execArgv, process.argv[1]!, '--child', bench.case, String(size), side], {
+  const output = execFileSync(process.execPath, [...process.execArgv, '--expose-gc', process.argv[1]!, '--child', bench.case, String(size), side], {
     encoding: 'utf8',
     maxBuffer: 1 << 20,
     stdio: ['ignore', 'pipe', 'inherit'],

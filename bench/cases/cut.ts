@@ -4,7 +4,7 @@
  * the mesh, made before the timing.
  */
 import type { KeepSide } from '../../src/core/cut/index.js';
-import { type BenchCase, PreparedCopies } from '../harness.js';
+import { type BenchCase, FreshCopy } from '../harness.js';
 import { buildMesh, cutMesh } from '../library.js';
 import { sphereFaceCount, sphereWithFaces } from './sphere.js';
 
@@ -14,12 +14,13 @@ export function cutCases(sizes: number[]): BenchCase[] {
   return sizes.flatMap((size) => {
     const repeat = size >= 1e6 ? 5 : 9;
     const cut = (keep: KeepSide): BenchCase => {
-      const copies = new PreparedCopies(repeat + 1);
+      const copies = new FreshCopy();
       return {
         case: keep === 'both' ? 'cut-capped' : `cut-capped-keep-${keep}`,
         size: sphereFaceCount(size),
         repeat,
-        prepare: () => copies.fill(buildMesh(sphereWithFaces(size)).mesh),
+        prepare: () => copies.from(buildMesh(sphereWithFaces(size)).mesh),
+        beforeEach: copies.renew,
         run: () => cutMesh(copies.take(), PLANE, { keep }),
       };
     };

@@ -13,7 +13,7 @@
  */
 import { MeshoptSimplifier } from 'meshoptimizer';
 import type { PolygonSoup } from '../../src/index.js';
-import { type BenchCase, PreparedCopies } from '../harness.js';
+import { type BenchCase, FreshCopy } from '../harness.js';
 import { buildMesh, decimate, smooth } from '../library.js';
 import { icosphere } from './icosphere.js';
 import { sphereFaceCount, sphereWithFaces } from './sphere.js';
@@ -23,7 +23,7 @@ export function smoothDecimateCases(sizes: number[]): BenchCase[] {
     const repeat = size >= 1e6 ? 3 : 5;
     // the icosphere level whose 20 · 4^level triangles come nearest `size` (level 8, 1.31M, for 1M)
     const level = Math.round(Math.log(size / 20) / Math.log(4));
-    const toSmooth = new PreparedCopies(repeat + 1);
+    const toSmooth = new FreshCopy();
     return [
       decimateCase('decimate', sphereFaceCount(size), () => sphereWithFaces(size), repeat),
       decimateCase('decimate-icosphere', 20 * 4 ** level, () => icosphere(level), repeat),
@@ -31,7 +31,8 @@ export function smoothDecimateCases(sizes: number[]): BenchCase[] {
         case: 'smooth-taubin',
         size: sphereFaceCount(size),
         repeat,
-        prepare: () => toSmooth.fill(buildMesh(sphereWithFaces(size)).mesh),
+        prepare: () => toSmooth.from(buildMesh(sphereWithFaces(size)).mesh),
+        beforeEach: toSmooth.renew,
         run: () => smooth(toSmooth.take(), { method: 'taubin', iterations: 10 }),
       },
     ];
@@ -41,7 +42,7 @@ export function smoothDecimateCases(sizes: number[]): BenchCase[] {
 /** Decimating the triangles `input` makes to a tenth of their `faces`, ours beside meshoptimizer's. */
 function decimateCase(name: string, faces: number, input: () => PolygonSoup, repeat: number): BenchCase {
   const targetFaces = Math.round(faces / 10);
-  const copies = new PreparedCopies(repeat + 1);
+  const copies = new FreshCopy();
   let indices: Uint32Array;
   let positions: Float32Array;
   return {
@@ -50,13 +51,14 @@ function decimateCase(name: string, faces: number, input: () => PolygonSoup, rep
     repeat,
     async prepare(side) {
       const soup = input();
-      if (side === 'ours') copies.fill(buildMesh(soup).mesh);
+      if (side === 'ours') copies.from(buildMesh(soup).mesh);
       else {
         indices = Uint32Array.from(soup.faceIndices);
         positions = new Float32Array(soup.positions);
         await MeshoptSimplifier.ready;
       }
     },
+    beforeEach: copies.renew,
     run: () => decimate(copies.take(), { targetFaces }),
     peer: { name: 'meshoptimizer', run: () => MeshoptSimplifier.simplify(indices, positions, 3, 3 * targetFaces, 1) },
   };

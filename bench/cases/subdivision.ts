@@ -14,7 +14,7 @@
  */
 import { BufferAttribute, BufferGeometry } from 'three';
 import { LoopSubdivision } from 'three-subdivide';
-import { type BenchCase, PreparedCopies } from '../harness.js';
+import { type BenchCase, FreshCopy } from '../harness.js';
 import { torus } from '../../src/index.js';
 import { buildMesh, subdivide } from '../library.js';
 import { sphereFaceCount, sphereWithFaces } from './sphere.js';
@@ -26,8 +26,8 @@ export function subdivisionCases(sizes: number[]): BenchCase[] {
     const repeat = size >= 1e6 ? 3 : 5;
     const side = Math.round(Math.sqrt(size));
     const geometry = new BufferGeometry();
-    const loop = new PreparedCopies(repeat + 1);
-    const catmullClark = new PreparedCopies(repeat + 1);
+    const loop = new FreshCopy();
+    const catmullClark = new FreshCopy();
     return [
       {
         case: 'loop',
@@ -35,10 +35,11 @@ export function subdivisionCases(sizes: number[]): BenchCase[] {
         repeat,
         prepare(side) {
           const sphere = sphereWithFaces(size);
-          if (side === 'ours') return loop.fill(buildMesh(sphere).mesh);
+          if (side === 'ours') return loop.from(buildMesh(sphere).mesh);
           geometry.setAttribute('position', new BufferAttribute(new Float32Array(sphere.positions), 3));
           geometry.setIndex(new BufferAttribute(sphere.faceIndices, 1));
         },
+        beforeEach: loop.renew,
         run: () => subdivide(loop.take(), 'loop'),
         peer:
           size <= peerFaceLimit
@@ -49,7 +50,8 @@ export function subdivisionCases(sizes: number[]): BenchCase[] {
         case: 'catmull-clark',
         size: side * side,
         repeat,
-        prepare: () => catmullClark.fill(buildMesh(torus(side, side)).mesh),
+        prepare: () => catmullClark.from(buildMesh(torus(side, side)).mesh),
+        beforeEach: catmullClark.renew,
         run: () => subdivide(catmullClark.take(), 'catmull-clark'),
       },
     ];
