@@ -351,8 +351,6 @@ export class App {
       this.viewer.setMode(planar ? 'top' : 'perspective');
       this.byId('top-view').setAttribute('aria-pressed', String(planar));
     }
-    // a patch leaves the view where it was: the arrows grow from the same face, without asking the picking worker
-    void this.detail.refresh(snapshot.renderPatch !== null);
     this.tables.setMesh(mesh, this.inspection.convention, snapshot.idsVersion, snapshot.change);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
@@ -375,6 +373,9 @@ export class App {
     // framed last: the overlays it keeps the mesh clear of now show this mesh's counts
     if (frame) this.frameMesh();
     else this.frameAgainIfCovered();
+    // the arrows for the view as framed (too small to draw there, none are placed); a patch leaves
+    // the view where it was: they grow from the same face, without asking the picking worker
+    void this.detail.refresh(snapshot.renderPatch !== null);
     this.markReady();
     if (snapshot.pending) void this.completeDetails(snapshot);
   }

@@ -52,10 +52,13 @@ export class ViewDetail {
     const { mesh, scale } = this.context();
     if (!mesh) return;
     const call = ++this.refreshes;
-    if (sameView && this.arrowsHidden) {
-      // too small to see at this zoom: placing up to MAX_ARROWS of them would be wasted on every
-      // edit; none are kept (picking must not find an arrow of the mesh before), and `fit` asks
-      // again once they show
+    // another view: the face found in the middle of the last one says nothing of it
+    if (!sameView) this.viewFocus = -1;
+    if (this.edgePixels() < MIN_ARROW_EDGE_PIXELS) {
+      // too small to see at this zoom: placing up to MAX_ARROWS of them would be wasted, on every
+      // edit and on a large mesh just opened and framed whole (where finding the face in the
+      // middle of the view is a ray cast through every triangle); none are kept (picking must not
+      // find an arrow of the mesh before), and `fit` places them once they show
       this.arrows.update(mesh, new Int32Array(0), scale);
       this.stale = true;
       return;
@@ -87,16 +90,21 @@ export class ViewDetail {
   fit(): void {
     const { stats } = this.context();
     this.surface.cullBackFaces(stats?.closed === true && stats.components === 1 && (stats.volume ?? 0) > 0, this.viewer.camera.position);
-    // no edges (a point set), or only edges of no length: nothing that could crowd the view
-    const pixels = this.surface.edgeLength > 0 ? this.surface.edgeLength * this.viewer.pixelsPerUnit() : Infinity;
+    const pixels = this.edgePixels();
     this.surface.showEdges(pixels >= MIN_EDGE_PIXELS);
     const arrowsHidden = pixels < MIN_ARROW_EDGE_PIXELS;
     this.arrows.group.visible = !arrowsHidden;
     if (arrowsHidden !== this.arrowsHidden) {
       this.arrowsHidden = arrowsHidden;
       this.showNote();
-      if (!arrowsHidden && this.stale) void this.refresh(true);
     }
+    if (!arrowsHidden && this.stale) void this.refresh(true);
+  }
+
+  /** How long a typical edge is on screen, in pixels, from the camera as it is now. */
+  private edgePixels(): number {
+    // no edges (a point set), or only edges of no length: nothing that could crowd the view
+    return this.surface.edgeLength > 0 ? this.surface.edgeLength * this.viewer.pixelsPerUnit() : Infinity;
   }
 
   /** Says which arrows are drawn when not all of them are. */
