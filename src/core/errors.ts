@@ -21,11 +21,15 @@ export class TopologyError extends Error {
   override readonly name = 'TopologyError';
 }
 
-/** Where in a file a parse error happened. Text formats give line/column, binary ones a byte offset. */
+/**
+ * Where in a file a parse error happened. Text formats give line/column, binary ones a byte offset,
+ * JSON documents the path to the value (`accessors[2].count`; '' for the document itself).
+ */
 export interface FileLocation {
   line?: number;
   column?: number;
   byteOffset?: number;
+  path?: string;
 }
 
 export class ParseError extends Error {
