@@ -7,7 +7,7 @@
  * - `TopologyError`: an operation does not apply to this mesh or element (Loop on a quad mesh,
  *   collapsing an edge that would pinch the surface).
  * - `ParseError`: a mesh file is malformed; it names the format and the place (line and column for
- *   text, byte offset for binary).
+ *   text, byte offset for binary, the path to the value in a JSON document).
  *
  * All three carry a `name` and plain fields, so they survive `structuredClone` and the worker
  * boundary: rebuild them with `errorFromJSON`.
@@ -22,14 +22,31 @@ export class TopologyError extends Error {
 }
 
 /**
- * Where in a file a parse error happened. Text formats give line/column, binary ones a byte offset,
- * JSON documents the path to the value (`accessors[2].count`; '' for the document itself).
+ * Where in a file a parse error happened, never nowhere: text formats give the line (and column),
+ * binary ones the byte offset, JSON documents (halfedge JSON, glTF) the path to the value
+ * (`accessors[2].count`; '' for the document itself), with the line and column of its text, or
+ * its byte offset in a `.glb`, when the text is at hand.
  */
-export interface FileLocation {
+export type FileLocation = TextLocation | ByteLocation | PathLocation;
+
+interface Place {
   line?: number;
+  /** 1-based, counted in bytes (as the text scanner counts). */
   column?: number;
   byteOffset?: number;
   path?: string;
+}
+
+interface TextLocation extends Place {
+  line: number;
+}
+
+interface ByteLocation extends Place {
+  byteOffset: number;
+}
+
+interface PathLocation extends Place {
+  path: string;
 }
 
 export class ParseError extends Error {
@@ -40,21 +57,24 @@ export class ParseError extends Error {
   readonly reason: string;
 
   constructor(format: string, location: FileLocation, reason: string) {
-    super(`${format}: ${describeLocation(location)}${reason}`);
+    super(`${format}: ${describeLocation(location)}: ${reason}`);
     this.format = format;
     this.location = location;
     this.reason = reason;
   }
 }
 
-function describeLocation(location: FileLocation): string {
-  if (location.line !== undefined) {
-    return location.column !== undefined
-      ? `line ${location.line}, column ${location.column}: `
-      : `line ${location.line}: `;
-  }
-  if (location.byteOffset !== undefined) return `byte ${location.byteOffset}: `;
-  return '';
+/**
+ * A location in words: "line 12, column 5", "byte 84", "accessors[2].count", or both kinds
+ * ("line 3, column 7 (accessors[2].count)").
+ */
+export function describeLocation(location: FileLocation): string {
+  const { line, column, byteOffset, path } = location;
+  let place = '';
+  if (line !== undefined) place = column !== undefined ? `line ${line}, column ${column}` : `line ${line}`;
+  else if (byteOffset !== undefined) place = `byte ${byteOffset}`;
+  if (!path) return place || 'the document';
+  return place ? `${place} (${path})` : path;
 }
 
 /** Plain-object form of a core error, for `postMessage` and JSON. */
@@ -82,9 +102,11 @@ export function errorToJSON(error: unknown): ErrorRecord {
 
 /** Rebuilds the error `errorToJSON` flattened, with its type, so `instanceof` works again. */
 export function errorFromJSON(record: ErrorRecord): Error {
+  // `errorToJSON` gives every ParseError's record a location; a record without one stays a plain error
+  if (record.name === 'ParseError' && record.location) {
+    return new ParseError(record.format ?? 'file', record.location, record.reason ?? record.message);
+  }
   switch (record.name) {
-    case 'ParseError':
-      return new ParseError(record.format ?? 'file', record.location ?? {}, record.reason ?? record.message);
     case 'InvalidInputError':
       return new InvalidInputError(record.message);
     case 'TopologyError':

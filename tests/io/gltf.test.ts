@@ -23,6 +23,25 @@ async function open(bytes: Uint8Array, resources?: Map<string, Uint8Array<ArrayB
 
 const counts = (mesh: HalfedgeMesh) => ({ V: mesh.nVertices, E: mesh.nEdges, F: mesh.nFaces, boundaryLoops: boundaryLoops(mesh) });
 
+/** A .glb of the JSON text `json` (padded with spaces to whole words, as the format asks) and the binary chunk `bin`. */
+function glbFrom(json: Uint8Array, bin: Uint8Array): Uint8Array {
+  const jsonLength = Math.ceil(json.length / 4) * 4;
+  const binLength = Math.ceil(bin.length / 4) * 4;
+  const bytes = new Uint8Array(20 + jsonLength + 8 + binLength);
+  const view = new DataView(bytes.buffer);
+  view.setUint32(0, 0x46546c67, true); // 'glTF'
+  view.setUint32(4, 2, true);
+  view.setUint32(8, bytes.length, true);
+  view.setUint32(12, jsonLength, true);
+  view.setUint32(16, 0x4e4f534a, true); // 'JSON'
+  bytes.fill(0x20, 20, 20 + jsonLength);
+  bytes.set(json, 20);
+  view.setUint32(20 + jsonLength, binLength, true);
+  view.setUint32(24 + jsonLength, 0x004e4942, true); // 'BIN'
+  bytes.set(bin, 28 + jsonLength);
+  return bytes;
+}
+
 function boundaryLoops(mesh: HalfedgeMesh): number {
   const seen = new Set<number>();
   let loops = 0;
@@ -136,7 +155,42 @@ describe('reading glTF', () => {
     await expect(readMeshAsync(text)).rejects.toThrow(/buffer 0 is the file 'globe\.bin', which was not given/);
   });
 
-  it('refuses a broken file with the place or the accessor named', async () => {
+  it('refuses a position that is NaN, or that a node takes to infinity, naming where; drops a NaN normal or texture coordinate with a note', async () => {
+    const square = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0];
+    const glbOfSquare = (positions: number[], attributes: { normals?: number[]; uvs?: number[] } = {}, scale = 1) => {
+      const document = new Document();
+      addMesh(document, 'Square', positions, [0, 1, 2, 0, 2, 3], attributes).setScale([scale, 1, 1]);
+      return glbOf(document);
+    };
+    const refusal = async (bytes: Uint8Array) => ((await readMeshAsync(bytes).catch((error: unknown) => error)) as ParseError).message;
+    const nan = [...square];
+    nan[4] = Number.NaN;
+    expect(await refusal(await glbOfSquare(nan))).toMatch(
+      /^glTF: byte \d+ \(meshes\[0\]\.primitives\[0\]\.attributes\.POSITION\): Square: vertex 1's position \(item 1\) is NaN, not a number$/,
+    );
+    expect(await refusal(await glbOfSquare(square.map((x) => x * 1e30), {}, 1e300))).toMatch(
+      /^glTF: byte \d+ \(nodes\[0\]\): Square: the node's transform takes vertex 1 \(1\.0\d*e\+30, 0, 0\) of primitive 0 beyond the range of a double$/,
+    );
+    const normals = [0, 0, 1, Number.NaN, Number.NaN, Number.NaN, 0, 0, 1, 0, 0, 1];
+    const uvs = [0, 0, 1, 0, 1, 1, 0, Infinity];
+    const { file, mesh } = await open(await glbOfSquare(square, { normals, uvs }));
+    expect(file.notes).toEqual(
+      expect.arrayContaining([
+        expect.stringMatching(/^dropped 1 glTF vertex normal that was NaN or infinite, set to zero; the first is vertex 1 of Square \(primitive 0\), at byte \d+ \(meshes\[0\]\.primitives\[0\]\.attributes\.NORMAL\)$/),
+        expect.stringMatching(/^dropped 1 glTF vertex texture coordinate that was NaN or infinite, set to zero; the first is vertex 3 of Square \(primitive 0\)/),
+      ]),
+    );
+    // the corners at (1, 0, 0) have no normal; the others keep theirs
+    const normal = mesh.halfedgeAttributes.get('normal')!.data;
+    for (const h of mesh.halfedges()) {
+      if (mesh.heFace[h] === -1) continue;
+      const expected = mesh.position(mesh.heVertex[h]).join() === '1,0,0' ? [0, 0, 0] : [0, 0, 1];
+      expect(Array.from(normal.subarray(3 * h, 3 * h + 3))).toEqual(expected);
+    }
+    expect(counts(mesh)).toEqual({ V: 4, E: 5, F: 2, boundaryLoops: 1 });
+  });
+
+  it('refuses a broken file naming the place: the byte of a .glb, the line, column and JSON path of a .gltf', async () => {
     const glb = await glbOf(sphereDocument());
     const view = new DataView(glb.buffer, glb.byteOffset, glb.byteLength);
     const jsonLength = view.getUint32(12, true);
@@ -167,17 +221,17 @@ describe('reading glTF', () => {
       j.buffers[0].uri = 'b.bin';
       j.buffers[0].byteLength = 100;
     });
-    expect(await refusal(short, files)).toMatch(/^glTF: bufferView \d+ needs bytes \d+…\d+ of buffer 0, which has 100$/);
+    expect(await refusal(short, files)).toMatch(/^glTF: line 1, column \d+ \(bufferViews\[\d+\]\): bufferView \d+ needs bytes \d+…\d+ of buffer 0, which has 100$/);
     const bomb = withJson((j: Record<string, any>) => {
       j.buffers[0].uri = 'b.bin';
       j.accessors[0].count = 2 ** 40;
     });
-    expect(await refusal(bomb, new Map([['b.bin', bin]]))).toMatch(/^glTF: accessor 0 claims 1099511627776 elements/);
+    expect(await refusal(bomb, new Map([['b.bin', bin]]))).toMatch(/^glTF: line 1, column \d+ \(accessors\[0\]\.count\): accessor 0 claims 1099511627776 elements/);
     const longAccessor = withJson((j: Record<string, any>) => {
       j.buffers[0].uri = 'b.bin';
       j.accessors[0].count += 1;
     });
-    expect(await refusal(longAccessor, new Map([['b.bin', bin]]))).toMatch(/^glTF: accessor 0 needs \d+ bytes of bufferView \d+, which has \d+$/);
+    expect(await refusal(longAccessor, new Map([['b.bin', bin]]))).toMatch(/^glTF: line 1, column \d+ \(accessors\[0\]\): accessor 0 needs \d+ bytes of bufferView \d+, which has \d+$/);
     // an index past the vertices: the indices are the last accessor the writer made; one of them is set too high
     const indices = json.meshes[0].primitives[0].indices;
     const indexView = json.bufferViews[json.accessors[indices].bufferView];
@@ -186,7 +240,17 @@ describe('reading glTF', () => {
     const outOfRange = withJson((j: Record<string, any>) => {
       j.buffers[0].uri = 'b.bin';
     });
-    expect(await refusal(outOfRange, new Map([['b.bin', badIndex]]))).toBe(`glTF: Globe: index 7 of accessor ${indices} is 5000, but the primitive has 153 vertices`);
+    // (the column is the index's accessor number, after `"indices":` in the one line of JSON)
+    const column = new TextDecoder().decode(outOfRange).indexOf('"indices":') + '"indices":'.length + 1;
+    expect(await refusal(outOfRange, new Map([['b.bin', badIndex]]))).toBe(
+      `glTF: line 1, column ${column} (meshes[0].primitives[0].indices): Globe: index 7 of accessor ${indices} is 5000, but the primitive has 153 vertices`,
+    );
+    // the same in a .glb: the byte offset in the file, past the 20 bytes before the JSON
+    const glbJson = withJson(() => {});
+    const offset = 20 + new TextDecoder().decode(glbJson).indexOf('"indices":') + '"indices":'.length;
+    expect(await refusal(glbFrom(glbJson, badIndex))).toBe(
+      `glTF: byte ${offset} (meshes[0].primitives[0].indices): Globe: index 7 of accessor ${indices} is 5000, but the primitive has 153 vertices`,
+    );
     expect(await refusal(new TextEncoder().encode('{"asset": {"version": "1.0"}}'))).toMatch(/only glTF 2\.0 is read/);
   });
 });
@@ -237,7 +301,7 @@ describe('the command line', () => {
     writeFileSync(join(dir, 'inner', 'evil.gltf'), JSON.stringify({ asset: { version: '2.0' }, buffers: [{ uri: '%2e%2e/secret.bin', byteLength: 16 }] }));
     // a UsageError: the command line prints it on one line and exits with status 2
     await expect(convert.run([join(dir, 'inner', 'evil.gltf'), join(dir, 'out.glb')])).rejects.toThrow(
-      /evil\.gltf: glTF: buffer 0 is the file '%2e%2e\/secret\.bin', which was not given/,
+      /evil\.gltf: glTF: line 1, column \d+ \(buffers\[0\]\.uri\): buffer 0 is the file '%2e%2e\/secret\.bin', which was not given/,
     );
   });
 });

@@ -161,6 +161,21 @@ describe('halfedge JSON', () => {
     });
   }
 
+  it('names the place of what it refuses: the path to the value, with its line and column when the document is text', () => {
+    const doc = meshToHalfedgeJSON(buildMesh(tetrahedron()).mesh);
+    (doc.vertices[3].position as unknown[])[2] = null;
+    expect(parseError(() => meshFromHalfedgeJSON(doc)).location).toEqual({ path: 'vertices[3].position[2]' });
+    const source = JSON.stringify(doc, null, 2);
+    const lines = source.split('\n');
+    const line = lines.findIndex((l) => l.includes('null')) + 1;
+    const column = lines[line - 1].indexOf('null') + 1;
+    expect(parseError(() => meshFromHalfedgeJSON(source)).message).toBe(
+      `halfedge-json: line ${line}, column ${column} (vertices[3].position[2]): vertex 3: item 2 of 'position' is null, not a number (JSON writes NaN and infinity as null)`,
+    );
+    // text that is not JSON: where it breaks
+    expect(parseError(() => meshFromHalfedgeJSON('{\n  "format": "halfedge-json",\n  "version": 1,,\n}')).location).toEqual({ line: 3, column: 16 });
+  });
+
   it('reads a float32 attribute value written as a double that float32 holds exactly, and refuses one beyond its range', () => {
     const { mesh } = buildMesh(tetrahedron());
     mesh.faceAttributes.add('weight', 'float32', 1).data.set([0.1, 0.2, 0.3, 3e38]);

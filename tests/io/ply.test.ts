@@ -594,17 +594,25 @@ describe('malformed PLY', () => {
     expect(error.message).toBe("ply: line 8, column 3: expected a number, found 'abc'");
   });
 
-  it('refuses NaN and infinity, in text where they stand and in binary naming the vertex', () => {
+  it('refuses a position that is NaN or infinite where it stands: line and column in text, byte offset in binary', () => {
     const header = `${xyzHeader(2)}end_header\n`;
     expect(parseError(() => read(`${header}0 0 0\n1 nan 0\n`)).message).toBe(
-      "ply: line 9, column 3: expected a number, found 'nan' (NaN and infinity are not allowed)",
+      "ply: line 9, column 3: vertex 1's position (item 1) is NaN, not a number",
     );
     expect(parseError(() => read(`${header}0 0 0\n1 1e999 0\n`)).message).toMatch(
-      /line 9, column 3: the number '1e999' is too large/,
+      /^ply: line 9, column 3: vertex 1's position \(item 1\) is infinity: a value written as infinite, or beyond the range of float32/,
     );
     const rows = [...square.rows.slice(0, 2), [0, Number.NaN, 0], [Infinity, 0, 0]];
-    expect(parseError(() => read(makePly('binary_little_endian', [{ ...square, rows }]))).message).toBe(
-      "ply: vertex 2's position (item 1) is NaN, not a number",
+    const bytes = makePly('binary_little_endian', [{ ...square, rows }]);
+    // after the header: two rows of three float32, then the third row's x
+    const y = bytes.length - 4 * 12 + 2 * 12 + 4;
+    expect(parseError(() => read(bytes)).message).toBe(`ply: byte ${y}: vertex 2's position (item 1) is NaN, not a number`);
+  });
+
+  it('refuses NaN or infinity written for an integer property, which cannot hold it', () => {
+    const header = `${xyzHeader(1)}property uchar red\nend_header\n`;
+    expect(parseError(() => read(`${header}0 0 0 inf\n`)).message).toBe(
+      "ply: line 9, column 7: row 0 of element 'vertex': property 'red' is uint8, which holds no NaN or infinity",
     );
   });
 

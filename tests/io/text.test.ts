@@ -88,6 +88,26 @@ describe('the number scanner', () => {
     expect(belowPowers.map((source) => numbersOf(source)[0])).toEqual(belowPowers.map(Number));
   });
 
+  it('reads NaN and infinity written as words, and a number beyond a double as infinity, none of them whole', () => {
+    const scanner = new TextScanner(text('nan -NaN inf -Infinity +INF 1e999 -1e999 12345678901234567890e300'), 'test');
+    const read = Array.from({ length: 8 }, () => [scanner.number(), scanner.integral]);
+    expect(read).toEqual([
+      [Number.NaN, false],
+      [Number.NaN, false],
+      [Infinity, false],
+      [-Infinity, false],
+      [Infinity, false],
+      [Infinity, false],
+      [-Infinity, false],
+      [Infinity, false],
+    ]);
+    // only the whole word: a token that starts like one is no number
+    for (const token of ['nanx', 'infinit', 'in', '-nan1']) expect(parseError(() => numbersOf(token)).reason).toBe(`expected a number, found '${token}'`);
+    // where `#` starts a comment, it ends the word as it ends a number
+    const commented = new TextScanner(text('inf#c'), 'test', { hashComments: true });
+    expect([commented.number(), commented.atLineEnd()]).toEqual([Infinity, true]);
+  });
+
   it('says whether a number was written as an integer', () => {
     const scanner = new TextScanner(text('255 1.0 1e2'), 'test');
     const integral = [0, 1, 2].map(() => (scanner.number(), scanner.integral));

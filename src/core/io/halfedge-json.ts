@@ -30,6 +30,8 @@ import {
 import { InvalidInputError, ParseError } from '../errors.js';
 import { HalfedgeMesh } from '../mesh.js';
 import { plural } from '../report.js';
+import { type JsonPath, type JsonText, jsonLocation, syntaxErrorLocation } from './json-location.js';
+import { encodeText } from './text.js';
 
 export type MeshElementKind = 'vertex' | 'halfedge' | 'edge' | 'face';
 
@@ -184,29 +186,37 @@ function finiteItem(data: ArrayLike<number>, itemSize: number, where: string, id
  * slots, the same pointers, the same deleted flags and attributes.
  * @example
  *   const copy = meshFromHalfedgeJSON(JSON.stringify(meshToHalfedgeJSON(mesh)));
- * @throws ParseError (format 'halfedge-json') naming the record and field that is malformed.
+ * @throws ParseError (format 'halfedge-json') naming the record and field that is malformed, with
+ *   its path (`vertices[3].position[1]`), and its line and column when the document is text.
  */
 export function meshFromHalfedgeJSON(doc: unknown): HalfedgeMesh {
-  const fail = (reason: string): never => {
-    throw new ParseError('halfedge-json', {}, reason);
+  // the text is placed only for an error: encoded then, never on the way of a good document
+  const source = typeof doc === 'string' ? doc : null;
+  const text = (): JsonText | null => {
+    if (source === null) return null;
+    const bytes = encodeText(source);
+    return { bytes, start: 0, end: bytes.length, byteOffsets: false };
   };
-  if (typeof doc === 'string') {
+  const fail: Fail = (path, reason) => {
+    throw new ParseError('halfedge-json', jsonLocation(text(), path), reason);
+  };
+  if (source !== null) {
     try {
-      doc = JSON.parse(doc) as unknown;
+      doc = JSON.parse(source) as unknown;
     } catch (error) {
-      fail(`not valid JSON: ${(error as Error).message}`);
+      throw new ParseError('halfedge-json', syntaxErrorLocation(text()!), `not valid JSON: ${(error as Error).message}`);
     }
   }
-  if (!isObject(doc)) return fail('the document must be an object with vertices, halfedges, edges and faces');
-  if (doc.format !== 'halfedge-json') fail(`'format' must be 'halfedge-json', not ${JSON.stringify(doc.format)}`);
-  if (doc.version !== 1) fail(`version ${JSON.stringify(doc.version)} is not known (this reader reads version 1)`);
+  if (!isObject(doc)) return fail([], 'the document must be an object with vertices, halfedges, edges and faces');
+  if (doc.format !== 'halfedge-json') fail(['format'], `'format' must be 'halfedge-json', not ${JSON.stringify(doc.format)}`);
+  if (doc.version !== 1) fail(['version'], `version ${JSON.stringify(doc.version)} is not known (this reader reads version 1)`);
   const vertices = table(doc, 'vertices', fail);
   const halfedges = table(doc, 'halfedges', fail);
   const edges = table(doc, 'edges', fail);
   const faces = table(doc, 'faces', fail);
   const descriptions = table(doc, 'attributes', fail);
   if (halfedges.length !== 2 * edges.length) {
-    fail(`there are ${halfedges.length} halfedges for ${edges.length} edges; every edge has exactly 2`);
+    fail(['halfedges'], `there are ${halfedges.length} halfedges for ${edges.length} edges; every edge has exactly 2`);
   }
 
   const mesh = new HalfedgeMesh({ vertices: vertices.length, edges: edges.length, faces: faces.length });
@@ -219,21 +229,23 @@ export function meshFromHalfedgeJSON(doc: unknown): HalfedgeMesh {
     edge: edges.length,
     face: faces.length,
   };
-  /** A pointer field: the id of an element of kind `points`, or -1 for none. */
-  const field = (record: JsonObject, what: string, key: string, points: MeshElementKind): number => {
+  /** A pointer field of record `id` of `kind`: the id of an element of kind `points`, or -1 for none. */
+  const field = (record: JsonObject, kind: MeshElementKind, id: number, key: string, points: MeshElementKind): number => {
     const value = record[key];
-    if (!Number.isInteger(value)) fail(`${what}: '${key}' must be an integer, not ${JSON.stringify(value)}`);
-    const id = value as number;
-    if (!(id === -1 || (id >= 0 && id < counts[points]))) {
-      fail(`${what}: '${key}' is ${id}, but ${points} ids run from 0 to ${counts[points] - 1} (or -1 for none)`);
+    const what = `${kind} ${id}`;
+    const path = [tables[kind], id, key];
+    if (!Number.isInteger(value)) fail(path, `${what}: '${key}' must be an integer, not ${JSON.stringify(value)}`);
+    const pointer = value as number;
+    if (!(pointer === -1 || (pointer >= 0 && pointer < counts[points]))) {
+      fail(path, `${what}: '${key}' is ${pointer}, but ${points} ids run from 0 to ${counts[points] - 1} (or -1 for none)`);
     }
-    return id;
+    return pointer;
   };
   const recordAt = (list: unknown[], i: number, kind: MeshElementKind): JsonObject => {
     const record = list[i];
-    if (!isObject(record)) return fail(`${kind} ${i}: the record must be an object`);
+    if (!isObject(record)) return fail([tables[kind], i], `${kind} ${i}: the record must be an object`);
     if (record.id !== i) {
-      fail(`${kind} record ${i} has id ${JSON.stringify(record.id)}; records must be listed by id, from 0`);
+      fail([tables[kind], i, 'id'], `${kind} record ${i} has id ${JSON.stringify(record.id)}; records must be listed by id, from 0`);
     }
     return record;
   };
@@ -248,28 +260,28 @@ export function meshFromHalfedgeJSON(doc: unknown): HalfedgeMesh {
   };
   const readExtras = (record: JsonObject, kind: MeshElementKind, id: number) => {
     if (record.deleted === true) deleted[kind][id] = 1;
-    else if (record.deleted !== undefined) fail(`${kind} ${id}: 'deleted' must be true or absent`);
+    else if (record.deleted !== undefined) fail([tables[kind], id, 'deleted'], `${kind} ${id}: 'deleted' must be true or absent`);
     readAttributeValues(record, kind, id, attributes, fail);
   };
 
   vertices.forEach((_, v) => {
     const record = recordAt(vertices, v, 'vertex');
-    mesh.vHalfedge[v] = field(record, `vertex ${v}`, 'halfedge', 'halfedge');
-    readNumbers(record.position, mesh.positions, 'float64', 3, v, `vertex ${v}`, "'position'", fail);
+    mesh.vHalfedge[v] = field(record, 'vertex', v, 'halfedge', 'halfedge');
+    readNumbers(record.position, mesh.positions, 'float64', 3, v, ['vertices', v, 'position'], `vertex ${v}`, "'position'", fail);
     readExtras(record, 'vertex', v);
   });
   halfedges.forEach((_, h) => {
     const record = recordAt(halfedges, h, 'halfedge');
     const what = `halfedge ${h}`;
-    mesh.heVertex[h] = field(record, what, 'origin', 'vertex');
-    mesh.heNext[h] = field(record, what, 'next', 'halfedge');
-    mesh.hePrev[h] = field(record, what, 'prev', 'halfedge');
-    mesh.heFace[h] = field(record, what, 'face', 'face');
-    if (field(record, what, 'twin', 'halfedge') !== (h ^ 1)) {
-      fail(`${what}: 'twin' must be ${h ^ 1} (the twins of edge e are 2e and 2e + 1)`);
+    mesh.heVertex[h] = field(record, 'halfedge', h, 'origin', 'vertex');
+    mesh.heNext[h] = field(record, 'halfedge', h, 'next', 'halfedge');
+    mesh.hePrev[h] = field(record, 'halfedge', h, 'prev', 'halfedge');
+    mesh.heFace[h] = field(record, 'halfedge', h, 'face', 'face');
+    if (field(record, 'halfedge', h, 'twin', 'halfedge') !== (h ^ 1)) {
+      fail(['halfedges', h, 'twin'], `${what}: 'twin' must be ${h ^ 1} (the twins of edge e are 2e and 2e + 1)`);
     }
-    if (field(record, what, 'edge', 'edge') !== h >> 1) {
-      fail(`${what}: 'edge' must be ${h >> 1} (halfedge h lies on edge h >> 1)`);
+    if (field(record, 'halfedge', h, 'edge', 'edge') !== h >> 1) {
+      fail(['halfedges', h, 'edge'], `${what}: 'edge' must be ${h >> 1} (halfedge h lies on edge h >> 1)`);
     }
     readExtras(record, 'halfedge', h);
   });
@@ -277,18 +289,20 @@ export function meshFromHalfedgeJSON(doc: unknown): HalfedgeMesh {
     const record = recordAt(edges, e, 'edge');
     const pair = record.halfedges;
     if (!Array.isArray(pair) || pair[0] !== 2 * e || pair[1] !== 2 * e + 1 || pair.length !== 2) {
-      fail(`edge ${e}: 'halfedges' must be [${2 * e}, ${2 * e + 1}]`);
+      fail(['edges', e, 'halfedges'], `edge ${e}: 'halfedges' must be [${2 * e}, ${2 * e + 1}]`);
     }
     readExtras(record, 'edge', e);
   });
   faces.forEach((_, f) => {
     const record = recordAt(faces, f, 'face');
-    mesh.fHalfedge[f] = field(record, `face ${f}`, 'halfedge', 'halfedge');
+    mesh.fHalfedge[f] = field(record, 'face', f, 'halfedge', 'halfedge');
     readExtras(record, 'face', f);
   });
   // a halfedge is deleted with its edge, and only then
   for (let h = 0; h < halfedges.length; h++) {
-    if (deleted.halfedge[h] !== deleted.edge[h >> 1]) fail(`halfedge ${h}: 'deleted' must match its edge ${h >> 1}`);
+    if (deleted.halfedge[h] !== deleted.edge[h >> 1]) {
+      fail(['halfedges', h, 'deleted'], `halfedge ${h}: 'deleted' must match its edge ${h >> 1}`);
+    }
   }
   deleted.vertex.forEach((flag, v) => flag && mesh.deleteVertex(v));
   deleted.edge.forEach((flag, e) => flag && mesh.deleteEdge(e));
@@ -296,19 +310,23 @@ export function meshFromHalfedgeJSON(doc: unknown): HalfedgeMesh {
   return mesh;
 }
 
-type Fail = (reason: string) => never;
+/** Refuses the document, naming the value at `path`. */
+type Fail = (path: JsonPath, reason: string) => never;
 
 type JsonObject = Record<string, unknown>;
+
+/** The table of the document that holds the records of each kind. */
+const tables: Record<MeshElementKind, string> = { vertex: 'vertices', halfedge: 'halfedges', edge: 'edges', face: 'faces' };
 
 function isObject(value: unknown): value is JsonObject {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
 }
 
 /**
- * Stores `value`, a list of `itemSize` numbers, as item `id` of `data`. Each must be a number the
- * array holds as it is: finite (JSON writes NaN and infinity as null, and reads 1e999 as
- * infinity), within the range of a float32 array, and a whole number in range for an integer one
- * (which would otherwise wrap 256 to 0 or cut 1.5 to 1 without a word).
+ * Stores `value`, a list of `itemSize` numbers (at `path`), as item `id` of `data`. Each must be a
+ * number the array holds as it is: finite (JSON writes NaN and infinity as null, and reads 1e999
+ * as infinity), within the range of a float32 array, and a whole number in range for an integer
+ * one (which would otherwise wrap 256 to 0 or cut 1.5 to 1 without a word).
  */
 function readNumbers(
   value: unknown,
@@ -316,29 +334,30 @@ function readNumbers(
   type: AttributeType,
   itemSize: number,
   id: number,
+  path: JsonPath,
   where: string,
   field: string,
   fail: Fail,
 ): void {
-  if (!Array.isArray(value) || value.length !== itemSize) return fail(`${where}: ${field} must be ${plural(itemSize, 'number')}`);
+  if (!Array.isArray(value) || value.length !== itemSize) return fail(path, `${where}: ${field} must be ${plural(itemSize, 'number')}`);
   const exact = !type.startsWith('float');
   for (let k = 0; k < itemSize; k++) {
     const x: unknown = value[k];
     const at = itemSize * id + k;
     if (typeof x !== 'number') {
       const why = x === null ? ' (JSON writes NaN and infinity as null)' : '';
-      fail(`${where}: item ${k} of ${field} is ${JSON.stringify(x) ?? String(x)}, not a number${why}`);
+      fail([...path, k], `${where}: item ${k} of ${field} is ${JSON.stringify(x) ?? String(x)}, not a number${why}`);
     }
     data[at] = x as number;
     if (!Number.isFinite(data[at]) || (exact && data[at] !== x)) {
-      fail(`${where}: item ${k} of ${field} is ${String(x)}, which ${type} cannot hold`);
+      fail([...path, k], `${where}: item ${k} of ${field} is ${String(x)}, which ${type} cannot hold`);
     }
   }
 }
 
 function table(doc: JsonObject, key: string, fail: Fail): unknown[] {
   const list = doc[key];
-  if (!Array.isArray(list)) return fail(`'${key}' must be a list`);
+  if (!Array.isArray(list)) return fail([key], `'${key}' must be a list`);
   return list;
 }
 
@@ -357,26 +376,27 @@ function readDescriptions(
   };
   const byKey = new Map<string, Attribute>();
   descriptions.forEach((description, i) => {
-    if (!isObject(description)) return fail(`attribute ${i}: the description must be an object`);
+    const at = (key?: string): JsonPath => (key === undefined ? ['attributes', i] : ['attributes', i, key]);
+    if (!isObject(description)) return fail(at(), `attribute ${i}: the description must be an object`);
     const { element, name, type, itemSize, interpolation } = description;
     if (typeof element !== 'string' || !Object.hasOwn(sets, element)) {
-      fail(`attribute ${i}: 'element' must be vertex, halfedge, edge or face`);
+      fail(at('element'), `attribute ${i}: 'element' must be vertex, halfedge, edge or face`);
     }
     if (typeof name !== 'string' || !name || (element === 'vertex' && name === 'position')) {
-      fail(`attribute ${i}: 'name' must be a non-empty string other than the vertex 'position'`);
+      fail(at('name'), `attribute ${i}: 'name' must be a non-empty string other than the vertex 'position'`);
     }
     const what = `attribute ${i} '${String(name)}'`;
     if (typeof type !== 'string' || !Object.hasOwn(attributeArrayTypes, type)) {
-      fail(`${what}: unknown type ${JSON.stringify(type)}`);
+      fail(at('type'), `${what}: unknown type ${JSON.stringify(type)}`);
     }
-    if (!Number.isInteger(itemSize) || (itemSize as number) < 1) fail(`${what}: 'itemSize' must be a positive integer`);
+    if (!Number.isInteger(itemSize) || (itemSize as number) < 1) fail(at('itemSize'), `${what}: 'itemSize' must be a positive integer`);
     const kind = element as MeshElementKind;
     checkItemSize(records[kind], kind, name as string, itemSize as number, i, fail);
     if (interpolation !== 'linear' && interpolation !== 'copy') {
-      fail(`${what}: 'interpolation' must be 'linear' or 'copy'`);
+      fail(at('interpolation'), `${what}: 'interpolation' must be 'linear' or 'copy'`);
     }
     const key = `${element}:${name}`;
-    if (byKey.has(key)) fail(`attribute ${i}: ${element} attribute '${name}' is described twice`);
+    if (byKey.has(key)) fail(at(), `attribute ${i}: ${element} attribute '${name}' is described twice`);
     const set = sets[kind];
     byKey.set(key, set.add(name as string, type as AttributeType, itemSize as number, interpolation as Interpolation));
   });
@@ -402,10 +422,10 @@ function checkItemSize(records: unknown[], kind: MeshElementKind, name: string, 
   if (agreeing === 0) {
     const values = `${plural(held, 'value')} of ${kind} attribute '${name}'`;
     const elements = plural(records.length, kind, kind === 'vertex' ? 'vertices' : `${kind}s`);
-    fail(`attributes[${i}].itemSize is ${itemSize}; the document holds ${values} for ${elements}`);
+    fail(['attributes', i, 'itemSize'], `attributes[${i}].itemSize is ${itemSize}; the document holds ${values} for ${elements}`);
   }
   const wrong = ownList(records[first], name) ? `must be ${plural(itemSize, 'number')}` : 'is missing';
-  fail(`${kind} ${first}: attribute '${name}' ${wrong}`);
+  fail([tables[kind], first, 'attributes', name], `${kind} ${first}: attribute '${name}' ${wrong}`);
 }
 
 /** The record's own list of values for attribute `name` (never one found on a prototype), if it has one. */
@@ -425,14 +445,15 @@ function readAttributeValues(
   fail: Fail,
 ): void {
   const values = record.attributes ?? {};
-  if (!isObject(values)) return fail(`${kind} ${id}: 'attributes' must be an object`);
+  const path = [tables[kind], id, 'attributes'];
+  if (!isObject(values)) return fail(path, `${kind} ${id}: 'attributes' must be an object`);
   for (const [key, attribute] of attributes) {
     if (!key.startsWith(`${kind}:`)) continue;
     const { name, type, itemSize, data } = attribute;
     // an own list of itemSize values: checkItemSize made sure of it before allocating the array
-    readNumbers(values[name], data, type, itemSize, id, `${kind} ${id}`, `attribute '${name}'`, fail);
+    readNumbers(values[name], data, type, itemSize, id, [...path, name], `${kind} ${id}`, `attribute '${name}'`, fail);
   }
   for (const name of Object.keys(values)) {
-    if (!attributes.has(`${kind}:${name}`)) fail(`${kind} ${id}: attribute '${name}' is not described in 'attributes'`);
+    if (!attributes.has(`${kind}:${name}`)) fail([...path, name], `${kind} ${id}: attribute '${name}' is not described in 'attributes'`);
   }
 }

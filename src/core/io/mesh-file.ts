@@ -3,6 +3,7 @@
  * triangulated, with their attributes), the counts the file states, its comments, and plain
  * sentences about anything the reader noticed or skipped, for the app to show beside the mesh.
  */
+import type { FileLocation } from '../errors.js';
 import type { PolygonSoup } from '../soup.js';
 
 export type MeshFormat = 'ply' | 'off' | 'obj' | 'stl' | 'gltf';
@@ -35,6 +36,22 @@ export interface MeshFile {
 }
 
 export type Progress = (fraction: number) => void;
+
+/** The elements of a soup that values belong to. */
+export type SoupElement = 'vertex' | 'face' | 'corner';
+
+/**
+ * Where in the file item `item` of element `index`'s value `name` (`position`, or an attribute's
+ * name) was read. Readers find it by walking their file again to that place: it is asked only
+ * for a value that is reported (see `finite.ts`), never on the way of a file that holds none.
+ */
+export type Locate = (element: SoupElement, name: string, index: number, item: number) => FileLocation;
+
+/** What a reader gives `readMesh`: the file, and how to find where its values were read. */
+export interface ReaderOutput {
+  file: MeshFile;
+  locate: Locate;
+}
 
 /**
  * Readers report progress every `PROGRESS_ROWS + 1` rows or so (a power of two, for a mask):

@@ -15,11 +15,11 @@
  * materials, smoothing groups, lines and points mean nothing to a halfedge mesh: each kind is
  * counted in the notes and skipped.
  */
-import { ParseError } from '../errors.js';
+import { type FileLocation, ParseError } from '../errors.js';
 import { plural } from '../report.js';
 import type { SoupAttribute } from '../soup.js';
 import { GrowableArray } from './growable.js';
-import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
+import { type Locate, type MeshFile, type Progress, PROGRESS_ROWS, type ReaderOutput } from './mesh-file.js';
 import { PlainLines, TextScanner } from './text.js';
 
 const SLASH = 47;
@@ -76,7 +76,7 @@ class IndexResolver {
  * Reads an OBJ file into a polygon soup, with per-corner texture coordinates and normals.
  * @throws ParseError with the line and column.
  */
-export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
+export function readObj(bytes: Uint8Array, progress: Progress): ReaderOutput {
   const comments: string[] = [];
   const notes: string[] = [];
   const scanner = new TextScanner(bytes, 'obj', { hashComments: true, comments });
@@ -86,6 +86,8 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
   const normals = new GrowableArray((n) => new Float32Array(n), 0);
   // typed by assertion: `addVertex` sets it, where the compiler does not look when it narrows
   let colors = null as GrowableArray<Float32Array<ArrayBuffer>> | null;
+  /** Vertices without a colour in a file that colours some (left black). */
+  let uncolored = 0;
   const faceStarts = new GrowableArray((n) => new Uint32Array(n), guess);
   faceStarts.push(0);
   const faceIndices = new GrowableArray((n) => new Uint32Array(n), 3 * guess);
@@ -131,11 +133,13 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
     if (count === 6) {
       if (!colors) {
         colors = new GrowableArray((n) => new Float32Array(n), positions.data.length);
-        colors.pushRepeated(Number.NaN, positions.length - 3);
+        uncolored = vertexIds.count;
+        colors.pushRepeated(0, 3 * uncolored);
       }
       for (let k = 3; k < 6; k++) colors.push(source[at + k]);
     } else if (colors) {
-      for (let k = 0; k < 3; k++) colors.push(Number.NaN);
+      colors.pushRepeated(0, 3);
+      uncolored++;
     }
     vertexIds.count++;
     return true;
@@ -256,16 +260,14 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
   const faceCount = faceStarts.length - 1;
   const vertexAttributes: SoupAttribute[] = [];
   if (colors) {
-    const data = colors.finish();
-    const uncolored = data.reduce((n, x, i) => (i % 3 === 0 && Number.isNaN(x) ? n + 1 : n), 0);
     if (uncolored > 0) notes.push(`${plural(uncolored, 'vertex has', 'vertices have')} no colour (left black)`);
-    vertexAttributes.push({ name: 'color', itemSize: 3, data: data.map((x) => (Number.isNaN(x) ? 0 : x)) });
+    vertexAttributes.push({ name: 'color', itemSize: 3, data: colors.finish() });
   }
   const cornerAttributes: SoupAttribute[] = [];
-  if (cornerTexcoords) {
-    cornerAttributes.push(gather('texcoord', 2, texcoords.finish(), cornerTexcoords.finish(), notes));
-  }
-  if (cornerNormals) cornerAttributes.push(gather('normal', 3, normals.finish(), cornerNormals.finish(), notes));
+  const texcoordOfCorner = cornerTexcoords?.finish();
+  const normalOfCorner = cornerNormals?.finish();
+  if (texcoordOfCorner) cornerAttributes.push(gather('texcoord', 2, texcoords.finish(), texcoordOfCorner, notes));
+  if (normalOfCorner) cornerAttributes.push(gather('normal', 3, normals.finish(), normalOfCorner, notes));
   if (ignored.size > 0) {
     // a file that is not really OBJ can have thousands of "statements": name the first few kinds
     const total = [...ignored.values()].reduce((a, b) => a + b, 0);
@@ -277,7 +279,14 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
   if (scanner.droppedComments > 0) {
     notes.push(`kept the first ${comments.length} comments, ${scanner.droppedComments} more not kept`);
   }
-  return {
+  const locate: Locate = (element, name, index, item) => {
+    // a vertex's colour follows its x y z; a corner's normal or texture coordinate is the one its
+    // `vn` or `vt` statement gives (only the attributes there are, of vertices and corners, are asked for)
+    if (element === 'vertex') return statementPlace(bytes, 'v', index, name === 'color' ? 3 + item : item);
+    if (name === 'normal') return statementPlace(bytes, 'vn', normalOfCorner![index], item);
+    return statementPlace(bytes, 'vt', texcoordOfCorner![index], item);
+  };
+  const file: MeshFile = {
     format: 'obj',
     encoding: 'ascii',
     soup: {
@@ -291,6 +300,25 @@ export function readObj(bytes: Uint8Array, progress: Progress): MeshFile {
     comments,
     notes,
   };
+  return { file, locate };
+}
+
+/**
+ * Where number `item` of the `index`-th statement `keyword` (`v`, `vt`, `vn`) is. Walks the file
+ * statement by statement, a line each, as `readObj` read it.
+ */
+function statementPlace(bytes: Uint8Array, keyword: string, index: number, item: number): FileLocation {
+  const scanner = new TextScanner(bytes, 'obj', { hashComments: true });
+  let seen = 0;
+  while (scanner.skipBlankLines()) {
+    if (scanner.word() === keyword && seen++ === index) {
+      for (let k = 0; k < item; k++) scanner.number();
+      scanner.skipSpaces();
+      break;
+    }
+    scanner.nextLine();
+  }
+  return scanner.location();
 }
 
 /** One value per corner, looked up from the list the corners index (-1: none, left zero). */

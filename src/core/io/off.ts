@@ -28,12 +28,12 @@
  * colour count after each face; pmp-library writes it little-endian without the count. Each
  * layout is tried; the one that uses the file up exactly wins.
  */
-import { ParseError } from '../errors.js';
+import { type FileLocation, ParseError } from '../errors.js';
 import { plural } from '../report.js';
 import type { PolygonSoup, SoupAttribute } from '../soup.js';
-import { BinaryReader } from './binary.js';
+import { BinaryReader, viewOf } from './binary.js';
 import { GrowableArray } from './growable.js';
-import type { MeshFile, Progress } from './mesh-file.js';
+import type { Locate, MeshFile, Progress, ReaderOutput } from './mesh-file.js';
 import { type PlainLines, TextScanner } from './text.js';
 
 /** `[ST][C][N][4][n]OFF`, possibly with the counts glued on (`OFF8 6 0`). */
@@ -73,7 +73,7 @@ function maxValuesPerLine(shape: OffShape): number {
  * Reads an OFF file (text or `OFF BINARY`) into a polygon soup.
  * @throws ParseError with the line and column (text) or byte offset (binary).
  */
-export function readOff(bytes: Uint8Array, progress: Progress): MeshFile {
+export function readOff(bytes: Uint8Array, progress: Progress): ReaderOutput {
   const comments: string[] = [];
   const notes: string[] = [];
   const scanner = new TextScanner(bytes, 'off', { hashComments: true, comments });
@@ -120,17 +120,17 @@ export function readOff(bytes: Uint8Array, progress: Progress): MeshFile {
     checkDimension(shape.dimension, bytes.length, (reason) => scanner.fail(reason, at));
   }
 
-  let file: Omit<MeshFile, 'comments' | 'notes'>;
+  let read: OffRead;
   if (binary) {
     scanner.nextLine();
-    file = readBinaryOff(bytes, scanner.pos, shape, notes);
+    read = readBinaryOff(bytes, scanner.pos, shape, notes);
   } else {
-    file = readTextOff(scanner, shape, notes, progress);
+    read = readTextOff(scanner, shape, notes, progress);
   }
   if (scanner.droppedComments > 0) {
     notes.push(`kept the first ${comments.length} comments, ${scanner.droppedComments} more not kept`);
   }
-  return { ...file, comments, notes };
+  return { file: { ...read.file, comments, notes }, locate: read.locate };
 }
 
 /** Geomview files may open with an `appearance { … }` block (braces nest); it is not geometry. */
@@ -193,6 +193,8 @@ class OffMesh {
     }
     const w = shape.homogeneous ? values[at + shape.dimension] : 1;
     if (w === 0) return `vertex ${v} has w = 0: a point at infinity has no place in a mesh`;
+    // x − x is 0 for every finite number, NaN for NaN and both infinities
+    if (w - w !== 0) return `vertex ${v} has w = ${w}: the coordinate that divides the others must be a finite number`;
     const normalCount = shape.normals ? 3 : 0;
     const texcoordCount = shape.texcoords ? 2 : 0;
     const colorCount = count - coordinates - normalCount - texcoordCount;
@@ -272,10 +274,13 @@ class OffMesh {
 /**
  * Colours of vertices or faces as written: RGB or RGBA, integers 0…255 or reals 0…1. Kept as
  * uint8 when every number was written as an integer, else as float32; RGB ones get an opaque
- * alpha when others have one.
+ * alpha when others have one. A value written as NaN is kept as it is (`finite.ts` drops it).
  */
 class ColorCollector {
+  /** RGBA of each element, the components it was given. */
   private values: Float32Array | null = null;
+  /** How many components each element's colour has: 3, 4, or 0 for none. */
+  private components: Uint8Array | null = null;
   private readonly count: number;
   private colored = 0;
   private hasAlpha = false;
@@ -286,27 +291,28 @@ class ColorCollector {
   }
 
   set(i: number, source: Float64Array, integral: Uint8Array, from: number, components: number): void {
-    const values = (this.values ??= new Float32Array(4 * this.count).fill(Number.NaN));
+    const values = (this.values ??= new Float32Array(4 * this.count));
     for (let k = 0; k < components; k++) {
       values[4 * i + k] = source[from + k];
       if (!integral[from + k]) this.integral = false;
     }
+    (this.components ??= new Uint8Array(this.count))[i] = components;
     if (components === 4) this.hasAlpha = true;
     this.colored++;
   }
 
   finish(owner: 'vertex' | 'face', notes: string[]): SoupAttribute | null {
-    const values = this.values;
-    if (!values) return null;
+    const { values, components } = this;
+    if (!values || !components) return null;
     const itemSize = this.hasAlpha ? 4 : 3;
-    const uint8 = this.integral && values.every((x) => Number.isNaN(x) || (x >= 0 && x <= 255));
+    // (the components not given are 0, within range)
+    const uint8 = this.integral && values.every((x) => x >= 0 && x <= 255);
     const data = uint8 ? new Uint8Array(itemSize * this.count) : new Float32Array(itemSize * this.count);
     const opaque = uint8 ? 255 : 1;
     for (let i = 0; i < this.count; i++) {
       for (let k = 0; k < itemSize; k++) {
-        const x = values[4 * i + k];
         // an element without a colour is opaque black; an RGB colour among RGBA ones is opaque
-        data[itemSize * i + k] = Number.isNaN(x) ? (k === 3 ? opaque : 0) : x;
+        data[itemSize * i + k] = k < components[i] ? values[4 * i + k] : k === 3 ? opaque : 0;
       }
     }
     const missing = this.count - this.colored;
@@ -322,10 +328,25 @@ class ColorCollector {
 // -------------------------------------------------------------------------------------------------
 // Text
 
-/** What the text and binary readers give; `readOff` adds the comments and notes. */
-type OffFile = Omit<MeshFile, 'comments' | 'notes'>;
+/** What the text and binary readers give; `readOff` adds the comments and notes to the file. */
+interface OffRead {
+  file: Omit<MeshFile, 'comments' | 'notes'>;
+  locate: Locate;
+}
 
-function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], progress: Progress): OffFile {
+/**
+ * Which of a vertex's `count` numbers item `item` of its value `name` was read from: coordinates,
+ * normal, colour (3 or 4 numbers), texture coordinates, as the keyword says.
+ */
+function vertexNumber(shape: OffShape, name: string, item: number, count: number): number {
+  const coordinates = shape.dimension + (shape.homogeneous ? 1 : 0);
+  if (name === 'normal') return coordinates + item;
+  if (name === 'color') return coordinates + (shape.normals ? 3 : 0) + item;
+  if (name === 'texcoord') return count - 2 + item;
+  return item;
+}
+
+function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], progress: Progress): OffRead {
   const bytes = scanner.bytes;
   // the counts: vertices and faces, then an optional edge count, on one line
   if (!scanner.skipBlankLines()) scanner.fail('the file ends before the counts (vertices, faces, edges)');
@@ -335,6 +356,7 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
   const faceCount = scanner.integer();
   if (!scanner.atLineEnd()) scanner.integer();
   scanner.endLine('the counts are vertices, faces and edges');
+  const rowsStart = { start: scanner.pos, line: scanner.line };
   if (vertexCount < 0 || faceCount < 0) {
     throw new ParseError('off', countsAt, `negative counts: ${vertexCount} vertices, ${faceCount} faces`);
   }
@@ -402,10 +424,10 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
     if (degree < 1) {
       scanner.fail(`face ${f} has ${degree} corners; a face needs at least one`, at);
     }
-    if (degree > (bytes.length - scanner.pos + 1) / 2) {
-      scanner.fail(`face ${f} announces ${degree} corners, more than the rest of the file holds`, at);
-    }
-    const indices = faceIndices.reserveRow(degree, f, faceCount, faceIndices.length + (bytes.length - scanner.pos + 1) / 2);
+    // room for no more ids than the rest of the file holds (an id and a space take two bytes): a
+    // count beyond it is refused where the ids run out, as in the same file with comments, longer
+    const room = Math.floor((bytes.length - scanner.pos + 1) / 2);
+    const indices = faceIndices.reserveRow(Math.min(degree, room), f, faceCount, faceIndices.length + room);
     let n = faceIndices.length;
     for (let k = 0; k < degree; k++) {
       if (scanner.atLineEnd() && !scanner.skipBlankLines()) {
@@ -447,12 +469,58 @@ function readTextOff(scanner: TextScanner, shape: OffShape, notes: string[], pro
     throw new ParseError('off', error.location, `${error.reason} (note: ${firstSpan}; if it should not, it lists too few numbers)`);
   }
   if (scanner.skipBlankLines()) notes.push(`ignored the text after the last face (from line ${scanner.line})`);
-  return {
+  const file: OffRead['file'] = {
     format: 'off',
     encoding: 'ascii',
     soup: mesh.finish(notes),
     counts: { vertices: vertexCount, faces: faceCount },
   };
+  const locate: Locate = (element, name, index, item) => {
+    const row = new TextScanner(bytes, 'off', { hashComments: true, ...rowsStart });
+    const numbers: FileLocation[] = [];
+    for (let v = 0; v < (element === 'vertex' ? index : vertexCount); v++) readTextVertex(row, fewest, null);
+    if (element === 'vertex') {
+      readTextVertex(row, fewest, numbers);
+      return numbers[vertexNumber(shape, name, item, numbers.length)];
+    }
+    // a face's only value is its colour, the numbers after its vertex ids
+    for (let f = 0; f <= index; f++) readTextFace(row, f === index ? numbers : null);
+    return numbers[item];
+  };
+  return { file, locate };
+}
+
+/**
+ * Reads past a vertex as `readTextOff` reads it (the numbers of its line, and more from the lines
+ * after while it has fewer than `fewest`), adding where each of its numbers is to `numbers`.
+ */
+function readTextVertex(scanner: TextScanner, fewest: number, numbers: FileLocation[] | null): void {
+  scanner.skipBlankLines();
+  let count = 0;
+  for (; !scanner.atLineEnd(); count++) {
+    numbers?.push(scanner.location());
+    scanner.number();
+  }
+  for (; count < fewest; count++) {
+    if (scanner.atLineEnd()) scanner.skipBlankLines();
+    numbers?.push(scanner.location());
+    scanner.number();
+  }
+}
+
+/** Reads past a face as `readTextOff` reads it, adding where each number of its colour is to `numbers`. */
+function readTextFace(scanner: TextScanner, numbers: FileLocation[] | null): void {
+  scanner.skipBlankLines();
+  const degree = scanner.integer();
+  for (let k = 0; k < degree; k++) {
+    if (scanner.atLineEnd()) scanner.skipBlankLines();
+    scanner.integer();
+  }
+  while (!scanner.atLineEnd()) {
+    numbers?.push(scanner.location());
+    scanner.number();
+  }
+  scanner.nextLine();
 }
 
 /**
@@ -523,7 +591,7 @@ const binaryLayouts: BinaryLayout[] = [
   { littleEndian: false, faceColorCount: false },
 ];
 
-function readBinaryOff(bytes: Uint8Array, start: number, shape: OffShape, notes: string[]): OffFile {
+function readBinaryOff(bytes: Uint8Array, start: number, shape: OffShape, notes: string[]): OffRead {
   // try each layout; the one that ends exactly at the end of the file is the file's
   let best: { result: BinaryResult; layout: BinaryLayout } | null = null;
   let furthest: ParseError | null = null;
@@ -547,18 +615,38 @@ function readBinaryOff(bytes: Uint8Array, start: number, shape: OffShape, notes:
   const spec = layout.littleEndian || !layout.faceColorCount ? ' (the Geomview spec says big-endian, with counts)' : '';
   notes.push(`OFF BINARY read as ${order} ${counts}${spec}`);
   if (result.end < bytes.length) notes.push(`ignored ${plural(bytes.length - result.end, 'byte')} after the last face`);
-  return {
+  const file: OffRead['file'] = {
     format: 'off',
     encoding: layout.littleEndian ? 'binary_little_endian' : 'binary_big_endian',
     soup: result.mesh.finish(notes),
     counts: { vertices: result.vertexCount, faces: result.faceCount },
   };
+  const { mesh, vertexStart, floatsPerVertex } = result;
+  const view = viewOf(bytes);
+  const int32At = (offset: number) => view.getInt32(offset, layout.littleEndian);
+  const locate: Locate = (element, name, index, item) => {
+    if (element === 'vertex') {
+      return { byteOffset: vertexStart + 4 * (index * floatsPerVertex + vertexNumber(mesh.shape, name, item, floatsPerVertex)) };
+    }
+    // a face's only value is its colour, after its corner count, its vertex ids and its colour count
+    let offset = vertexStart + 4 * floatsPerVertex * result.vertexCount;
+    for (let f = 0; f < index; f++) {
+      offset += 4 + 4 * int32At(offset);
+      offset += 4 + 4 * int32At(offset);
+    }
+    offset += 4 + 4 * int32At(offset);
+    return { byteOffset: offset + 4 + 4 * item };
+  };
+  return { file, locate };
 }
 
 interface BinaryResult {
   mesh: OffMesh;
   vertexCount: number;
   faceCount: number;
+  /** Where the vertices begin, and how many float32 each is. */
+  vertexStart: number;
+  floatsPerVertex: number;
   end: number;
 }
 
@@ -586,6 +674,7 @@ function readBinaryLayout(bytes: Uint8Array, start: number, keywordShape: OffSha
   const mesh = new OffMesh(shape, vertexCount, faceCount);
   const values = new Float64Array(maxValuesPerLine(shape));
   const integral = new Uint8Array(values.length);
+  const vertexStart = reader.offset;
   for (let v = 0; v < vertexCount; v++) {
     for (let k = 0; k < floatsPerVertex; k++) values[k] = reader.float32();
     const problem = mesh.setVertex(v, values, integral, 0, floatsPerVertex);
@@ -620,5 +709,5 @@ function readBinaryLayout(bytes: Uint8Array, start: number, keywordShape: OffSha
     const problem = mesh.setFaceColor(f, values, integral, 0, colorCount);
     if (problem !== null) reader.fail(problem);
   }
-  return { mesh, vertexCount, faceCount, end: reader.offset };
+  return { mesh, vertexCount, faceCount, vertexStart, floatsPerVertex, end: reader.offset };
 }

@@ -32,14 +32,18 @@
  *
  * Before anything is allocated, every element's row count is checked against the bytes left, so
  * a 40-byte file that claims two billion faces is refused at once.
+ *
+ * Each value of the soup remembers the properties it was read from, so that one that is NaN or
+ * infinite can be found in the file again (`finite.ts`): a byte offset from the element's layout,
+ * or the line of its row and the column of its token.
  */
 import { attributeArrayTypes, type AttributeType } from '../attributes.js';
-import { ParseError } from '../errors.js';
+import { type FileLocation, ParseError } from '../errors.js';
 import { plural } from '../report.js';
 import type { SoupAttribute } from '../soup.js';
-import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes } from './binary.js';
+import { BinaryReader, type NumberTarget, type ScalarType, scalarTypes, viewOf } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type Encoding, type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
+import { type Encoding, type Locate, type MeshFile, type Progress, PROGRESS_ROWS, type ReaderOutput, type SoupElement } from './mesh-file.js';
 import { quoted, someOf } from './names.js';
 import { type PlainLines, TextScanner } from './text.js';
 
@@ -112,13 +116,24 @@ interface PlyHeader {
  * Reads a PLY file (any of the three encodings) into a polygon soup.
  * @throws ParseError with the line (header, ascii data) or byte offset (binary data).
  */
-export function readPly(bytes: Uint8Array, progress: Progress): MeshFile {
+export function readPly(bytes: Uint8Array, progress: Progress): ReaderOutput {
   const header = readHeader(bytes);
   checkCountsFit(header, bytes.length);
   const plan = planElements(header);
   if (header.encoding === 'ascii') readAsciiBody(bytes, header, plan, progress);
   else readBinaryBody(bytes, header, plan, progress);
-  return assemble(header, plan);
+  const file = assemble(header, plan);
+  const locate: Locate = (element, name, index, item) => {
+    const { element: source, properties } = plan.sources.get(sourceKey(element, name))!;
+    const elementPlan = plan.elements.find((e) => e.element === source)!;
+    if (element !== 'corner') return valuePlace(bytes, header.encoding, elementPlan, index, properties[item], null);
+    // a corner's texture coordinate: two items of its face's list per corner
+    const { faceStarts } = file.soup;
+    let face = 0;
+    while (faceStarts[face + 1] <= index) face++;
+    return valuePlace(bytes, header.encoding, elementPlan, face, properties[0], 2 * (index - faceStarts[face]) + item);
+  };
+  return { file, locate };
 }
 
 // -------------------------------------------------------------------------------------------------
@@ -326,7 +341,19 @@ interface ElementPlan {
   properties: PropertyPlan[];
   /** Bytes per binary row when every property is a scalar; -1 when rows hold lists. */
   rowBytes: number;
+  /** Where its rows begin: a byte offset, and (ascii) the number of that line. */
+  start: number;
+  startLine: number;
 }
+
+/** The properties a soup value was read from: one per item, or the one list whose items they are. */
+interface ValueSource {
+  element: PlyElement;
+  properties: PlyProperty[];
+}
+
+/** The key of a soup value in `Plan.sources`. */
+const sourceKey = (element: SoupElement, name: string) => `${element}:${name}`;
 
 interface Plan {
   elements: ElementPlan[];
@@ -337,6 +364,8 @@ interface Plan {
   /** Per-face texture coordinates, two per corner. */
   faceTexcoords: ListCollector<Float32Array<ArrayBuffer>> | null;
   strips: ListCollector<Int32Array<ArrayBuffer>> | null;
+  /** The source of each value of the soup (positions and attributes), by `sourceKey`. */
+  sources: Map<string, ValueSource>;
   notes: string[];
 }
 
@@ -355,6 +384,7 @@ function planElements(header: PlyHeader): Plan {
     faces: null,
     faceTexcoords: null,
     strips: null,
+    sources: new Map(),
     notes,
   };
   /** Elements skipped whole, as `'name' (n rows)`, noted once at the end. */
@@ -383,7 +413,8 @@ function planElements(header: PlyHeader): Plan {
       const float32 = xyz.every((p) => p.property.type.type === 'float32');
       plan.positions = float32 ? new Float32Array(3 * rows) : new Float64Array(3 * rows);
       route(xyz, plan.positions, 3);
-      planAttributes(element, properties, scalars, plan.vertexAttributes, notes, true);
+      plan.sources.set(sourceKey('vertex', 'position'), { element, properties: xyz.map((p) => p.property) });
+      planAttributes(element, properties, scalars, plan.vertexAttributes, plan.sources, notes, true);
       noteSkippedLists(element, lists, notes);
     } else if (element === faceElement) {
       const faceList =
@@ -398,9 +429,10 @@ function planElements(header: PlyHeader): Plan {
       const texcoords = lists.find((p) => p.property.name === 'texcoord' || p.property.name === 'texcoords');
       if (texcoords && texcoords !== faceList) {
         texcoords.list = plan.faceTexcoords = new ListCollector(rows, (n) => new Float32Array(n), -Infinity, Infinity);
+        plan.sources.set(sourceKey('corner', 'texcoord'), { element, properties: [texcoords.property] });
       }
       noteSkippedLists(element, lists.filter((p) => p !== faceList && p !== texcoords), notes);
-      planAttributes(element, properties, scalars, plan.faceAttributes, notes, false);
+      planAttributes(element, properties, scalars, plan.faceAttributes, plan.sources, notes, false);
     } else if (element === stripsElement && lists.length > 0) {
       const stripList = lists.find((p) => p.property.name === 'vertex_indices') ?? lists[0];
       requireIntegers(element, stripList);
@@ -409,7 +441,7 @@ function planElements(header: PlyHeader): Plan {
       skipped.push(`${quoted(element.name)} (${plural(rows, 'row')})`);
     }
     const rowBytes = lists.length > 0 ? -1 : properties.reduce((sum, p) => sum + p.property.type.size, 0);
-    plan.elements.push({ element, properties, rowBytes });
+    plan.elements.push({ element, properties, rowBytes, start: 0, startLine: 0 });
   }
   if (skipped.length > 0) notes.push(`skipped ${skipped.length === 1 ? 'element' : 'elements'} ${someOf(skipped)}`);
   if (!vertexElement) {
@@ -481,6 +513,7 @@ function planAttributes(
   properties: PropertyPlan[],
   scalars: Map<string, PropertyPlan>,
   attributes: SoupAttribute[],
+  sources: Map<string, ValueSource>,
   notes: string[],
   isVertex: boolean,
 ): void {
@@ -490,6 +523,7 @@ function planAttributes(
     const data = new attributeArrayTypes[type](rows * group.length);
     route(group, data, group.length);
     attributes.push({ name, itemSize: group.length, data });
+    sources.set(sourceKey(isVertex ? 'vertex' : 'face', name), { element, properties: group.map((p) => p.property) });
     taken.add(name);
   };
   if (isVertex) {
@@ -527,8 +561,11 @@ function planAttributes(
 
 function readAsciiBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progress: Progress): void {
   const scanner = new TextScanner(bytes, 'ply', { start: header.bodyStart, line: header.bodyLine });
-  for (const { element, properties } of plan.elements) {
+  for (const elementPlan of plan.elements) {
+    const { element, properties } = elementPlan;
     const { name, count: rows } = element;
+    elementPlan.start = scanner.pos;
+    elementPlan.startLine = scanner.line;
     if (properties.length === 0) continue;
     // the fast lane takes rows of plain numbers whole when they fit their properties; any other
     // row, and every row of another layout, is read token by token
@@ -609,7 +646,12 @@ function readRowByTokens(scanner: TextScanner, element: PlyElement, properties: 
       scanner.fail(`row ${row} of element '${name}' ends before its property '${p.property.name}'`);
     }
     if (p.property.countType === null) {
+      const at = scanner.pos;
       const value = scanner.number();
+      // x − x is 0 for every finite number, NaN for NaN and both infinities
+      if (value - value !== 0 && !p.property.type.type.startsWith('float')) {
+        scanner.fail(`row ${row} of element '${name}': property '${p.property.name}' is ${p.property.type.type}, which holds no NaN or infinity`, at);
+      }
       if (p.target) p.target[row * p.stride + p.offset] = value;
       continue;
     }
@@ -651,9 +693,11 @@ function readBinaryBody(bytes: Uint8Array, header: PlyHeader, plan: Plan, progre
   const end = bytes.length;
   // the cursor lives in a local for speed: every read below is checked against `end` first
   let offset = header.bodyStart;
-  for (const { element, properties, rowBytes } of plan.elements) {
+  for (const elementPlan of plan.elements) {
+    const { element, properties, rowBytes } = elementPlan;
     const { name, count: rows } = element;
     progress(offset / end);
+    elementPlan.start = offset;
     if (properties.length === 0) continue;
     if (rowBytes >= 0) {
       // rows of scalars only: a table with fixed columns, read column by column
@@ -830,6 +874,47 @@ function readPolygonRun(
     starts[row + 1] = n;
   }
   return row;
+}
+
+/**
+ * Where `property` of row `row` of an element is (with `listItem`, that item of its list): walks
+ * the rows before it as they were read, a byte offset from the layout (binary), or a line per row
+ * and a token per value (ascii).
+ */
+function valuePlace(bytes: Uint8Array, encoding: Encoding, elementPlan: ElementPlan, row: number, property: PlyProperty, listItem: number | null): FileLocation {
+  const { element, rowBytes, start, startLine } = elementPlan;
+  if (encoding === 'ascii') {
+    const scanner = new TextScanner(bytes, 'ply', { start, line: startLine });
+    for (let r = 0; r < row; r++) {
+      scanner.skipBlankLines();
+      scanner.nextLine();
+    }
+    scanner.skipBlankLines();
+    for (const p of element.properties) {
+      if (p === property) break;
+      if (p.countType === null) scanner.word();
+      else for (let k = scanner.integer(); k > 0; k--) scanner.word();
+    }
+    if (listItem !== null) {
+      scanner.integer();
+      for (let k = 0; k < listItem; k++) scanner.word();
+    }
+    scanner.skipSpaces();
+    return scanner.location();
+  }
+  const view = viewOf(bytes);
+  const littleEndian = encoding === 'binary_little_endian';
+  /** Bytes of `p` at `offset`: a scalar, or a list's count and items. */
+  const size = (p: PlyProperty, offset: number) => (p.countType ? p.countType.size + p.countType.read(view, offset, littleEndian) * p.type.size : p.type.size);
+  let offset = start;
+  if (rowBytes >= 0) offset += row * rowBytes;
+  else for (let r = 0; r < row; r++) for (const p of element.properties) offset += size(p, offset);
+  for (const p of element.properties) {
+    if (p === property) break;
+    offset += size(p, offset);
+  }
+  if (listItem !== null) offset += property.countType!.size + listItem * property.type.size;
+  return { byteOffset: offset };
 }
 
 function listEndsEarly(element: PlyElement, row: number, p: PropertyPlan, count: number, found: number): string {

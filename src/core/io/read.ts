@@ -4,15 +4,15 @@
  */
 import { ParseError } from '../errors.js';
 import { detectFormat } from './detect.js';
-import { firstNonFiniteValue } from './finite.js';
+import { checkFiniteValues } from './finite.js';
 import type { GltfReadOptions } from './gltf.js';
-import type { MeshFile, MeshFormat, Progress, ReadOptions } from './mesh-file.js';
+import type { MeshFile, MeshFormat, Progress, ReaderOutput, ReadOptions } from './mesh-file.js';
 import { readObj } from './obj.js';
 import { readOff } from './off.js';
 import { readPly } from './ply.js';
 import { readStl } from './stl.js';
 
-const readers: Record<Exclude<MeshFormat, 'gltf'>, (bytes: Uint8Array, progress: Progress, weldTolerance?: number) => MeshFile> = {
+const readers: Record<Exclude<MeshFormat, 'gltf'>, (bytes: Uint8Array, progress: Progress, weldTolerance?: number) => ReaderOutput> = {
   ply: readPly,
   off: readOff,
   obj: readObj,
@@ -22,18 +22,18 @@ const readers: Record<Exclude<MeshFormat, 'gltf'>, (bytes: Uint8Array, progress:
 /**
  * Reads a PLY, OFF, OBJ or STL file (glTF, whose decoders load on demand, is `readMeshAsync`'s).
  * The format comes from the content (the file name is asked only when the content does not say);
- * faces stay polygons, attributes come along.
+ * faces stay polygons, attributes come along. A value that is NaN or infinite refuses the file
+ * when it is a position; any other is dropped, with a note (see `finite.ts`).
  * @example
  *   const file = readMesh(bytes, { fileName: 'bunny.ply' });
  *   const { mesh, report } = buildMesh(file.soup);
- * @throws ParseError for any malformed file, naming the line and column or the byte offset, and
- *   for a value that is NaN or infinite (after reading), naming the element and the attribute.
+ * @throws ParseError for any malformed file, naming the line and column or the byte offset.
  */
 export function readMesh(data: ArrayBuffer | Uint8Array, options: ReadOptions = {}): MeshFile {
   const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
   const progress = options.onProgress ?? (() => {});
   const format = detectFormat(bytes, options.fileName);
-  if (format === 'gltf') throw new ParseError('glTF', {}, 'a glTF file is read with `await readMeshAsync(bytes)`');
+  if (format === 'gltf') throw new ParseError('glTF', { byteOffset: 0 }, 'a glTF file is read with `await readMeshAsync(bytes)`');
   return readAs(format, bytes, progress, options.weldTolerance);
 }
 
@@ -42,7 +42,8 @@ export function readMesh(data: ArrayBuffer | Uint8Array, options: ReadOptions = 
  * `options.resources`), whose vertices are welded by position (see `readGltf`).
  * @example
  *   const file = await readMeshAsync(bytes, { fileName: 'duck.glb' });
- * @throws ParseError as `readMesh` does, naming the buffer or the accessor for glTF.
+ * @throws ParseError as `readMesh` does; for glTF, naming the path to the value in its JSON (with
+ *   the line and column of a `.gltf`, the byte offset in a `.glb`).
  */
 export async function readMeshAsync(data: ArrayBuffer | Uint8Array, options: ReadOptions & GltfReadOptions = {}): Promise<MeshFile> {
   const bytes = data instanceof Uint8Array ? data : new Uint8Array(data);
@@ -52,17 +53,16 @@ export async function readMeshAsync(data: ArrayBuffer | Uint8Array, options: Rea
   progress(0);
   // glTF-Transform and the decoders load only when a glTF file comes
   const { readGltf } = await import('./gltf.js');
-  return checkedFile(await readGltf(bytes, options), progress);
+  // glTF checks its values as it reads them, where it knows their accessor and element
+  const file = await readGltf(bytes, options);
+  progress(1);
+  return file;
 }
 
 function readAs(format: Exclude<MeshFormat, 'gltf'>, bytes: Uint8Array, progress: Progress, weldTolerance?: number): MeshFile {
   progress(0);
-  return checkedFile(readers[format](bytes, progress, weldTolerance), progress);
-}
-
-function checkedFile(file: MeshFile, progress: Progress): MeshFile {
-  const nonFinite = firstNonFiniteValue(file.soup);
-  if (nonFinite) throw new ParseError(file.format === 'gltf' ? 'glTF' : file.format, {}, nonFinite);
+  const { file, locate } = readers[format](bytes, progress, weldTolerance);
+  checkFiniteValues(file, locate);
   progress(1);
   return file;
 }

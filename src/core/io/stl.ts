@@ -18,12 +18,14 @@
  * A binary header may itself begin with "solid", so the size rule decides first. A halfedge mesh
  * needs shared vertices: corners at exactly the same position are welded into one vertex, found
  * in linear time by hashing the bits of the three coordinates. Facet normals are kept as the face
- * attribute `normal`.
+ * attribute `normal`; one that is NaN (a facet of no area has no normal, and some exporters write
+ * NaN for it) is computed again from the facet's corners (see `finite.ts`).
  */
 import { plural } from '../report.js';
 import { BinaryReader, viewOf } from './binary.js';
 import { GrowableArray } from './growable.js';
-import { type MeshFile, type Progress, PROGRESS_ROWS } from './mesh-file.js';
+import type { FileLocation } from '../errors.js';
+import { type Locate, type MeshFile, type Progress, PROGRESS_ROWS, type ReaderOutput } from './mesh-file.js';
 import { TextScanner, decodeText } from './text.js';
 import { weldPositions } from './weld.js';
 
@@ -48,7 +50,7 @@ function looksLikeAsciiStl(bytes: Uint8Array): boolean {
  * positions, or within `weldTolerance` of each other.
  * @throws ParseError with the line (ascii) or byte offset (binary).
  */
-export function readStl(bytes: Uint8Array, progress: Progress, weldTolerance = 0): MeshFile {
+export function readStl(bytes: Uint8Array, progress: Progress, weldTolerance = 0): ReaderOutput {
   const ascii = !isBinaryStl(bytes) && looksLikeAsciiStl(bytes);
   const comments: string[] = [];
   const notes: string[] = [];
@@ -65,7 +67,7 @@ export function readStl(bytes: Uint8Array, progress: Progress, weldTolerance = 0
   const how = weldTolerance > 0 ? `, within ${weldTolerance} of each other` : '';
   notes.push(`welded ${welded} (${cornerCount - vertexCount} merged${how})`);
   const faceCount = faceStarts.length - 1;
-  return {
+  const file: MeshFile = {
     format: 'stl',
     encoding: ascii ? 'ascii' : 'binary_little_endian',
     soup: {
@@ -78,6 +80,41 @@ export function readStl(bytes: Uint8Array, progress: Progress, weldTolerance = 0
     comments,
     notes,
   };
+  const locate: Locate = (element, _name, index, item) => {
+    // a vertex is where the first corner welded into it was read; the only face value is its normal
+    const corner = element === 'vertex' ? indices.indexOf(index) : -1;
+    if (ascii) return element === 'vertex' ? asciiPlace(bytes, 'vertex', corner, item) : asciiPlace(bytes, 'facet', index, item);
+    const triangle = HEADER_BYTES + 4 + TRIANGLE_BYTES * (element === 'vertex' ? Math.floor(corner / 3) : index);
+    return { byteOffset: element === 'vertex' ? triangle + 12 + 12 * (corner % 3) + 4 * item : triangle + 4 * item };
+  };
+  return { file, locate };
+}
+
+/**
+ * Where number `item` of the `index`-th `keyword` of an ascii STL is: of a corner (`vertex`), or
+ * of a facet's normal (`facet`, then `normal`). Walks the file word by word as `readAscii` read it.
+ */
+function asciiPlace(bytes: Uint8Array, keyword: 'facet' | 'vertex', index: number, item: number): FileLocation {
+  const scanner = new TextScanner(bytes, 'stl');
+  let seen = 0;
+  while (scanner.skipBlankLines()) {
+    // a solid's name is any text, keywords included
+    if (scanner.isWord('solid') || scanner.isWord('endsolid')) {
+      scanner.nextLine();
+    } else if (!scanner.isWord(keyword)) {
+      scanner.word();
+    } else if (seen++ === index) {
+      if (keyword === 'facet') {
+        scanner.skipBlankLines();
+        scanner.isWord('normal');
+      }
+      // a point's three numbers are on one line
+      for (let k = 0; k < item; k++) scanner.number();
+      scanner.skipSpaces();
+      break;
+    }
+  }
+  return scanner.location();
 }
 
 interface Triangles {

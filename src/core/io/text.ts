@@ -11,7 +11,10 @@
  * usual case, "0.123456" or "-1.5e-3". Numbers of up to 19 digits scaled down by at most 10^22, as
  * a double's shortest round trip is written ("0.12345678901234567"), are rounded exactly with a
  * remainder in two doubles (`longNumberValue`). Anything else falls back to the engine's own parser
- * on that one token, so every value is read exactly.
+ * on that one token, so every value is read exactly. `nan`, `inf` and `infinity` (in any case, with
+ * or without a sign: what C's printf and most languages write) are read as NaN and infinity, and a
+ * number beyond a double's range as infinity: whether a value may be one is for the reader to say
+ * (a position may not; an attribute's value is dropped with a note, see `finite.ts`).
  *
  * Most lines of most files are nothing but numbers: `plainLines` reads those a batch of lines at a
  * time, in a loop that builds no string and calls nothing per token, and stops at the first other
@@ -204,15 +207,23 @@ export class TextScanner {
   }
 
   /**
-   * Reads a decimal number ("12", "-0.5", "1.5e-3", ".5"). Sets `integral`.
-   * @throws ParseError when the next token is not a finite number.
+   * Reads a decimal number ("12", "-0.5", "1.5e-3", ".5"), or NaN or infinity written as a word
+   * ("nan", "-inf"); a number beyond a double's range is infinite. Sets `integral` (false for
+   * NaN and infinity).
+   * @throws ParseError when the next token is not a number.
    */
   number(): number {
     this.skipSpaces();
     const start = this.pos;
-    const end = scanNumber(this.bytes, start, this.hashComments);
-    if (end < 0) this.notANumber(start);
-    if (Number.isNaN(scanned.value)) this.fail(`the number '${this.token(start)}' is too large`, start);
+    let end = scanNumber(this.bytes, start, this.hashComments);
+    if (end >= 0 && Number.isNaN(scanned.value)) {
+      // only a number beyond a double's range scans as NaN (see `engineValue`)
+      scanned.value = this.bytes[start] === MINUS ? -Infinity : Infinity;
+      scanned.integral = false;
+    } else if (end < 0) {
+      end = scanNonFiniteWord(this.bytes, start, this.hashComments);
+      if (end < 0) this.notANumber(start);
+    }
     this.pos = end;
     this.integral = scanned.integral;
     return scanned.value;
@@ -319,10 +330,8 @@ export class TextScanner {
     if (!token) {
       this.fail(`expected a number, found the end of the ${start >= this.bytes.length ? 'file' : 'line'}`, start);
     }
-    const special = /^[+-]?(nan|inf)/i.test(token) ? ' (NaN and infinity are not allowed)' : '';
-    this.fail(`expected a number, found '${token}'${special}`, start);
+    this.fail(`expected a number, found '${token}'`, start);
   }
-
 
   private newLineAt(lineFeed: number): void {
     this.pos = lineFeed + 1;
@@ -386,6 +395,33 @@ function scanNumber(bytes: Uint8Array, i: number, hashComments: boolean): number
     scanned.value = longNumberValue(bytes, start, i);
   }
   return i;
+}
+
+/** How NaN and infinity are written as words, longest first (`inf` begins `infinity`), in small letters. */
+const NON_FINITE_WORDS: ReadonlyArray<[string, number]> = [
+  ['infinity', Infinity],
+  ['inf', Infinity],
+  ['nan', Number.NaN],
+];
+
+/**
+ * Scans NaN or infinity written as a word at `i` ("nan", "-inf", "Infinity", in any case), into
+ * `scanned`; returns where it ends, or -1 when no such word is there. Off the fast lane: only a
+ * token that is not a decimal number comes here.
+ */
+function scanNonFiniteWord(bytes: Uint8Array, i: number, hashComments: boolean): number {
+  const negative = bytes[i] === MINUS;
+  if (negative || bytes[i] === PLUS) i++;
+  for (const [word, value] of NON_FINITE_WORDS) {
+    let k = 0;
+    // setting bit 5 turns an ASCII capital into its small letter, and no other byte into a letter
+    while (k < word.length && (bytes[i + k] | 0x20) === word.charCodeAt(k)) k++;
+    if (k < word.length || !isDelimiter(bytes[i + k], hashComments)) continue;
+    scanned.value = negative ? -value : value;
+    scanned.integral = false;
+    return i + k;
+  }
+  return -1;
 }
 
 /** Splits a double into two halves of 26 bits each (Dekker), for `productError`. */
