@@ -1,7 +1,8 @@
 /**
  * The glTF reader fuzzer: `.glb` files the library writes (a cube and a strip, with normals and
  * texture coordinates per corner) and the same as `.gltf` JSON with the buffer inside, mutated as
- * the other readers' files are (`readers.ts`). Each must raise a `ParseError`, or read into a mesh
+ * the other readers' files are (`readers.ts`). Each must raise a `ParseError` that says where (a
+ * byte offset in a `.glb`, a line and column and JSON path in a `.gltf`), or read into a mesh
  * that is valid, saves and reads back the same (`reload.ts`), and writes as `.glb` and reads back
  * with the same counts. Asynchronous, as the glTF reader is.
  */
@@ -12,7 +13,7 @@ import { writeMeshAsync } from '../src/core/io/write.js';
 import type { HalfedgeMesh } from '../src/core/mesh.js';
 import { cube, strip } from '../src/core/shapes.js';
 import { validate } from '../src/core/validate.js';
-import { mutatedSample, type Sample } from './readers.js';
+import { type CheckOutcome, mutatedSample, refusal, type Sample } from './readers.js';
 import { reloadDifference } from './reload.js';
 import type { CaseOutcome, FuzzTarget } from './target.js';
 
@@ -48,7 +49,7 @@ function glbToEmbeddedGltf(glb: Uint8Array): Uint8Array {
 const counts = (mesh: HalfedgeMesh) => `V ${mesh.nVertices} E ${mesh.nEdges} F ${mesh.nFaces}`;
 
 /** Reads one mutated glTF file and checks what came of it. */
-export async function checkGltf(name: string, bytes: Uint8Array): Promise<{ kind: 'refused'; reason: string } | { kind: 'accepted' } | { kind: 'failure'; reason: string }> {
+export async function checkGltf(name: string, bytes: Uint8Array): Promise<CheckOutcome> {
   try {
     const file = await readMeshAsync(bytes, { fileName: name });
     const { mesh } = buildMesh(file.soup);
@@ -60,7 +61,7 @@ export async function checkGltf(name: string, bytes: Uint8Array): Promise<{ kind
     if (counts(again) !== counts(mesh)) return { kind: 'failure', reason: `written as .glb and read back: ${counts(mesh)} became ${counts(again)}` };
     return { kind: 'accepted' };
   } catch (error) {
-    if (error instanceof ParseError) return { kind: 'refused', reason: error.message };
+    if (error instanceof ParseError) return refusal(error);
     return { kind: 'failure', reason: `threw ${(error as Error)?.stack ?? String(error)}` };
   }
 }

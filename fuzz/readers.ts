@@ -1,10 +1,11 @@
 /**
  * The reader fuzzer: real files of every format, mutated — bytes flipped or set to telling values,
  * pieces cut, repeated or moved, number tokens put in, header counts and names edited — must each
- * either raise a `ParseError` or read into a soup the builder makes a valid mesh of, which then
- * saves and reads back to the same mesh (`reload.ts`). Anything else is a failure: another
- * exception, an invalid mesh, a round trip that changed it; a hang or a crash is the runner's to
- * see (`run.ts`), as it cannot be caught here.
+ * either raise a `ParseError` that says where (a line, a byte offset, or a path in the JSON) or
+ * read into a soup the builder makes a valid mesh of, which then saves and reads back to the same
+ * mesh (`reload.ts`). Anything else is a failure: another exception, a refusal that names no
+ * place, an invalid mesh, a round trip that changed it; a hang or a crash is the runner's to see
+ * (`run.ts`), as it cannot be caught here.
  *
  * Two targets: `readers` mutates files the library writes itself (every format and encoding, with
  * attributes), so its cases mean the same everywhere; `corpus` mutates the small real-world files
@@ -212,18 +213,23 @@ function mutateDocument(doc: unknown, rand: Random): string {
 /** At most this many bytes of a failing input go into its replay line, as base64. */
 const MAX_INPUT_BYTES = 8192;
 
+/** How one input ended: refused (with a place), accepted (and every check after held), or a failure. */
+export type CheckOutcome = { kind: 'refused'; reason: string } | { kind: 'accepted' } | { kind: 'failure'; reason: string };
+
+/** A `ParseError` is a refusal when it says where (its line, byte offset or JSON path), else a failure. */
+export function refusal(error: ParseError): CheckOutcome {
+  const { line, byteOffset, path } = error.location;
+  if (line === undefined && byteOffset === undefined && path === undefined) return { kind: 'failure', reason: `refused without saying where: ${error.message}` };
+  return { kind: 'refused', reason: error.message };
+}
+
 /** Runs one mutated input through reading, building, validation and reload; a failure's reason, or the outcome. */
-export function checkInput(name: string, bytes: Uint8Array): { kind: 'refused'; reason: string } | { kind: 'accepted' } | { kind: 'failure'; reason: string } {
+export function checkInput(name: string, bytes: Uint8Array): CheckOutcome {
   try {
     let mesh;
     if (name.endsWith('.json')) {
-      let doc: unknown;
-      try {
-        doc = JSON.parse(new TextDecoder().decode(bytes));
-      } catch (error) {
-        return { kind: 'refused', reason: `not JSON: ${(error as Error).message}` };
-      }
-      mesh = meshFromHalfedgeJSON(doc);
+      // the text itself, so that a refusal names its line and column
+      mesh = meshFromHalfedgeJSON(new TextDecoder().decode(bytes));
       // the document is read as it is, broken or not; what it holds must write back the same
       const again = meshFromHalfedgeJSON(JSON.parse(JSON.stringify(meshToHalfedgeJSON(mesh))));
       if (JSON.stringify(meshToHalfedgeJSON(again)) !== JSON.stringify(meshToHalfedgeJSON(mesh))) {
@@ -239,7 +245,7 @@ export function checkInput(name: string, bytes: Uint8Array): { kind: 'refused'; 
     if (difference) return { kind: 'failure', reason: `accepted, but saved and read back: ${difference}` };
     return { kind: 'accepted' };
   } catch (error) {
-    if (error instanceof ParseError) return { kind: 'refused', reason: error.message };
+    if (error instanceof ParseError) return refusal(error);
     return { kind: 'failure', reason: `threw ${(error as Error)?.stack ?? String(error)}` };
   }
 }

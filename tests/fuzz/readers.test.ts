@@ -5,9 +5,9 @@
  * without allocating what they announce.
  */
 import { describe, expect, it } from 'vitest';
-import { builtInSamples, checkInput, corpusSamples, corpusTarget, readersTarget, readerTarget } from '../../fuzz/readers.js';
+import { builtInSamples, checkInput, corpusSamples, corpusTarget, readersTarget, readerTarget, refusal } from '../../fuzz/readers.js';
 import type { CaseOutcome, FuzzTarget } from '../../fuzz/target.js';
-import { meshFromHalfedgeJSON, ParseError, readMesh } from '../../src/index.js';
+import { type FileLocation, meshFromHalfedgeJSON, ParseError, readMesh } from '../../src/index.js';
 
 const SEED = 20261125;
 
@@ -44,6 +44,12 @@ describe(`the reader fuzzer (seed ${SEED})`, () => {
     }
     expect(failures).toEqual([]);
     expect(refused).toBeGreaterThan(100);
+  });
+
+  it('counts a refusal that names no place in the file as a failure', () => {
+    const nowhere = new ParseError('ply', {} as FileLocation, 'something is wrong');
+    expect(refusal(nowhere)).toEqual({ kind: 'failure', reason: 'refused without saying where: ply: the document: something is wrong' });
+    expect(refusal(new ParseError('ply', { byteOffset: 7 }, 'something is wrong')).kind).toBe('refused');
   });
 
   // the fuzzer must not pass by not looking: a check that breaks on some inputs is reported, and
