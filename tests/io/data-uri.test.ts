@@ -17,9 +17,13 @@ describe('data URIs', () => {
   });
 
   it('refuse base64 with anything else in it, and a URI that is no data URI', () => {
-    for (const uri of ['data:;base64,AAAA AAAA', 'data:;base64,AAA*', 'data:;base64,A', 'data:;base64,AA=A', 'data:application/oc', 'file.bin']) {
+    for (const uri of ['data:;base64,AAA*', 'data:;base64,AA-A', 'data:;base64,A', 'data:;base64,AA=A', 'data:application/oc', 'file.bin']) {
       expect(dataUriBytes(uri), uri).toBeNull();
     }
+  });
+
+  it('decode base64 broken by white space, as atob does', () => {
+    expect(Array.from(dataUriBytes('data:;base64,AAEC\r\nAwQF\n')!)).toEqual([0, 1, 2, 3, 4, 5]);
   });
 
   it('decode percent-encoded text, when the URI does not say base64', () => {

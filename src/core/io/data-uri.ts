@@ -11,15 +11,20 @@ const BASE64_DIGITS = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz01234
 const base64Values = new Int8Array(128).fill(-1);
 for (let k = 0; k < BASE64_DIGITS.length; k++) base64Values[BASE64_DIGITS.charCodeAt(k)] = k;
 
+/** ASCII white space, which base64 may be broken by (as the web platform's `atob` allows). */
+const WHITE_SPACE = /[\t\n\f\r ]+/g;
+
 /**
  * The bytes `uri` holds: base64 when its type ends `;base64`, else percent-encoded text; null when
- * it is no `data:` URI or its base64 holds anything but base64 digits (and padding at the end).
+ * it is no `data:` URI or its base64 holds anything but base64 digits, white space, and padding at
+ * the end.
  */
 export function dataUriBytes(uri: string): Uint8Array<ArrayBuffer> | null {
   const comma = uri.indexOf(',');
   if (!uri.startsWith('data:') || comma < 0) return null;
-  const data = uri.slice(comma + 1);
-  if (!uri.slice(0, comma).endsWith(';base64')) return encodeText(percentDecoded(data)) as Uint8Array<ArrayBuffer>;
+  const written = uri.slice(comma + 1);
+  if (!uri.slice(0, comma).endsWith(';base64')) return encodeText(percentDecoded(written)) as Uint8Array<ArrayBuffer>;
+  const data = written.replace(WHITE_SPACE, '');
   const end = data.endsWith('==') ? data.length - 2 : data.endsWith('=') ? data.length - 1 : data.length;
   // a last group of one digit holds no whole byte
   if (end % 4 === 1) return null;
