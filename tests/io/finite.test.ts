@@ -135,6 +135,19 @@ describe('values that are not finite', () => {
     }
   });
 
+  it('name where the first dropped value was read for a few attributes, and tell of the rest in one note', () => {
+    const names = Array.from({ length: 12 }, (_, k) => `w${k}`);
+    const vertex = {
+      name: 'vertex',
+      props: ['x', 'y', 'z', ...names].map((name) => ({ name, type: 'float' })),
+      rows: [[0, 0, 0, ...names.map(() => Number.NaN)]],
+    };
+    const notes = read(makePly('binary_little_endian', [vertex])).notes.filter((note) => note.startsWith('dropped'));
+    expect(notes.length).toBe(9);
+    expect(notes[7]).toMatch(/^dropped 1 vertex 'w7' value that was NaN or infinite, set to zero; the first is vertex 0's, at byte \d+$/);
+    expect(notes[8]).toBe("dropped NaN or infinite values of 4 more attributes ('w8', 'w9', 'w10', 'w11'): 4 items, replaced as above");
+  });
+
   it('drop an OFF colour written as nan, and the mesh writes back as OFF', () => {
     const file = read('COFF\n3 1 0\n0 0 0 1 1 1\n1 0 0 0.5 nan 1\n0 1 0 1 1 1\n3 0 1 2\n', 'a.off');
     expect(file.notes).toContain("dropped 1 vertex colour that was NaN or infinite, set to black; the first is vertex 1's (item 1), at line 4, column 11");

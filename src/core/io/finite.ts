@@ -11,7 +11,9 @@
  *   texture coordinate of that element) is replaced by a neutral one: a face's normal is computed
  *   again from the face's corners (zero for a face without area, which has no normal); any other
  *   item becomes zeros, a colour opaque black. The attribute stays, so the mesh writes and reads
- *   back as it opened; a note says how many items were dropped, and where the first one was read.
+ *   back as it opened; a note says how many items were dropped, and where the first one was read
+ *   (for the first few attributes: each place is found by reading the file again; one note tells
+ *   of the rest).
  *
  * Checked once here, after a reader has filled the soup (glTF, whose values pass through node
  * transforms, checks each as it reads it, with `droppedValuesNote`). The writers refuse a mesh
@@ -21,8 +23,16 @@ import { describeLocation, type FileLocation, ParseError } from '../errors.js';
 import { plural } from '../report.js';
 import type { PolygonSoup, SoupAttribute } from '../soup.js';
 import type { Locate, MeshFile, SoupElement } from './mesh-file.js';
+import { quoted, someOf } from './names.js';
 
 const elementWords: Record<SoupElement, string> = { vertex: 'vertex', face: 'face', corner: 'face corner' };
+
+/**
+ * Attributes whose dropped values get a note of their own, naming where the first was read. Each
+ * place is found by walking the file again: a file of a hundred thousand attributes gets this
+ * many such notes, and one for the rest.
+ */
+const LOCATED_NOTES = 8;
 
 /**
  * Refuses the file when a position is not finite; replaces every other value that is not, adding
@@ -43,31 +53,49 @@ export function checkFiniteValues(file: MeshFile, locate: Locate): void {
     ['face', soup.faceAttributes],
     ['corner', soup.cornerAttributes],
   ];
+  /** The attributes beyond `LOCATED_NOTES` that had values dropped, and how many items those were. */
+  const others: string[] = [];
+  let otherItems = 0;
+  let located = 0;
   for (const [element, attributes] of groups) {
     for (const attribute of attributes ?? []) {
-      const note = dropNonFinite(soup, element, attribute, locate);
-      if (note) notes.push(note);
+      const dropped = dropNonFinite(soup, element, attribute);
+      if (dropped === null) continue;
+      if (located < LOCATED_NOTES) {
+        notes.push(droppedNote(element, attribute, dropped, locate));
+        located++;
+      } else {
+        others.push(quoted(attribute.name));
+        otherItems += dropped.count;
+      }
     }
   }
+  if (others.length > 0) {
+    const items = plural(otherItems, 'item');
+    notes.push(`dropped NaN or infinite values of ${plural(others.length, 'more attribute')} (${someOf(others)}): ${items}, replaced as above`);
+  }
+}
+
+/** What `dropNonFinite` replaced: how many items, and where in the data the first value was. */
+interface Dropped {
+  count: number;
+  first: number;
 }
 
 /**
  * Replaces each item of `attribute` that holds a value that is not finite (see the top of this
- * file); returns the note that says so, or null when there was none.
+ * file); returns what it replaced, or null when there was nothing to.
  */
-function dropNonFinite(soup: PolygonSoup, element: SoupElement, attribute: SoupAttribute, locate: Locate): string | null {
-  const { name, itemSize, data } = attribute;
+function dropNonFinite(soup: PolygonSoup, element: SoupElement, attribute: SoupAttribute): Dropped | null {
+  const { itemSize, data } = attribute;
   // only floating-point arrays can hold such a value
   if (!(data instanceof Float32Array || data instanceof Float64Array)) return null;
-  let i = firstNonFinite(data, 0);
-  if (i < 0) return null;
-  const first = Math.floor(i / itemSize);
-  const location = locate(element, name, first, i % itemSize);
-  const firstWords = `${elementWords[element]} ${first}'s${itemSize > 1 ? ` (item ${i % itemSize})` : ''}`;
-  const faceNormal = element === 'face' && name === 'normal' && itemSize === 3;
-  const opaque = name === 'color' && itemSize === 4;
+  const first = firstNonFinite(data, 0);
+  if (first < 0) return null;
+  const faceNormal = isFaceNormal(element, attribute);
+  const opaque = isOpaqueColour(attribute);
   let count = 0;
-  for (; i >= 0; count++) {
+  for (let i = first; i >= 0; count++) {
     const item = Math.floor(i / itemSize);
     if (faceNormal) setFaceNormal(soup, item, data);
     else {
@@ -76,17 +104,33 @@ function dropNonFinite(soup: PolygonSoup, element: SoupElement, attribute: SoupA
     }
     i = firstNonFinite(data, (item + 1) * itemSize);
   }
-  const values = `${elementWords[element]} ${valueWords[name] ?? `'${name}' value`}`;
-  const replacement = faceNormal
-    ? 'computed again from the corners of its face (zero for a face without area)'
-    : name === 'color'
-      ? `set to ${opaque ? 'opaque ' : ''}black`
-      : 'set to zero';
-  return droppedValuesNote(count, values, replacement, firstWords, location);
+  return { count, first };
 }
 
-/** What the attributes of the names readers give are called in a note. */
-const valueWords: Record<string, string> = { normal: 'normal', color: 'colour', texcoord: 'texture coordinate' };
+const isFaceNormal = (element: SoupElement, { name, itemSize }: SoupAttribute) => element === 'face' && name === 'normal' && itemSize === 3;
+const isOpaqueColour = ({ name, itemSize }: SoupAttribute) => name === 'color' && itemSize === 4;
+
+/** The note for the items of `attribute` that `dropNonFinite` replaced, naming where the first was read. */
+function droppedNote(element: SoupElement, attribute: SoupAttribute, { count, first }: Dropped, locate: Locate): string {
+  const { name, itemSize } = attribute;
+  const index = Math.floor(first / itemSize);
+  const item = first % itemSize;
+  const firstWords = `${elementWords[element]} ${index}'s${itemSize > 1 ? ` (item ${item})` : ''}`;
+  const values = `${elementWords[element]} ${valueWords.get(name) ?? `${quoted(name)} value`}`;
+  const replacement = isFaceNormal(element, attribute)
+    ? 'computed again from the corners of its face (zero for a face without area)'
+    : name === 'color'
+      ? `set to ${isOpaqueColour(attribute) ? 'opaque ' : ''}black`
+      : 'set to zero';
+  return droppedValuesNote(count, values, replacement, firstWords, locate(element, name, index, item));
+}
+
+/** What the attributes of the names readers give are called in a note (a Map: a file's name is any text). */
+const valueWords = new Map([
+  ['normal', 'normal'],
+  ['color', 'colour'],
+  ['texcoord', 'texture coordinate'],
+]);
 
 /**
  * The note for `count` values (`values`: "face normal") that were NaN or infinite and were
