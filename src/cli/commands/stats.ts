@@ -40,7 +40,7 @@ function flattenRepair(repair: Repair) {
 
 export const stats: Command = {
   usage: 'stats FILE [--json]',
-  summary: 'counts, topology (χ, genus, boundary loops) and repairs',
+  summary: 'counts, topology (χ, genus, boundary loops), repairs and what the reader noted',
   async run(args, reading) {
     const { values, positionals } = parseOptions(args, { json: { type: 'boolean' } }, 1);
     const doc = statsDocument(await loadMesh(positionals[0]!, reading));
@@ -64,6 +64,7 @@ export const stats: Command = {
     ];
     for (const [label, value] of rows) console.log(`${label.padEnd(32)} ${value}`);
     for (const r of doc.repairs) console.log(`repair: ${r.message}`);
+    for (const n of doc.notes) console.log(`note: ${n}`);
     for (const p of doc.problems) console.log(`problem: ${p.message}`);
     return 0;
   },

@@ -7,8 +7,10 @@ export const validateCommand: Command = {
   summary: 'exit 0 if the file is a clean halfedge mesh, 1 listing what had to be repaired',
   async run(args, reading) {
     const { positionals } = parseOptions(args, {}, 1);
-    const { mesh, report } = await loadMesh(positionals[0]!, reading);
+    const { file, mesh, report } = await loadMesh(positionals[0]!, reading);
     const problems = validate(mesh);
+    // what the reader dropped or skipped (a normal that was NaN): said, but the mesh is not unclean for it
+    for (const note of file.notes) console.log(`note: ${note}`);
     for (const repair of report.repairs) {
       console.log(`${repair.kind}: ${repair.message}`);
       for (const incident of repair.incidents.slice(0, 20)) console.log(`  ${incident.message}`);
