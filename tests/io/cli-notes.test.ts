@@ -18,7 +18,7 @@ function squareWithNanNormal(): string {
 }
 
 /** What `run` printed, line by line, and its exit status. */
-async function printed(run: () => Promise<number>): Promise<{ status: number; lines: string[] }> {
+async function printed(run: () => number | Promise<number>): Promise<{ status: number; lines: string[] }> {
   const log = vi.spyOn(console, 'log').mockImplementation(() => {});
   try {
     const status = await run();
