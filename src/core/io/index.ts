@@ -12,8 +12,8 @@
  * - `meshToHalfedgeJSON` / `meshFromHalfedgeJSON` write and read the halfedge tables themselves.
  *
  * Every malformed file raises `ParseError` with the place: line and column, byte offset, or the
- * path to the value in a JSON document. A position that is NaN or infinite refuses the file; any
- * other such value is dropped, with a note (`finite.ts`).
+ * path to the value in a JSON file (glTF, halfedge JSON). A position that is NaN or infinite
+ * refuses the file; any other such value is dropped, with a note (`finite.ts`).
  */
 export { detectFormat, formatFromFileName } from './detect.js';
 export * from './halfedge-json.js';
