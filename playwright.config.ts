@@ -6,7 +6,8 @@ import { defineConfig, devices } from '@playwright/test';
  * system Chromium (Debian's `chromium` package) is used when present; elsewhere Playwright's own.
  */
 const systemChromium = ['/usr/bin/chromium', '/usr/bin/chromium-browser'].find((path) => existsSync(path));
-const port = 5183;
+// E2E_PORT lets two checkouts run their browser tests at once, each against its own build
+const port = Number(process.env.E2E_PORT ?? 5183);
 
 export default defineConfig({
   testDir: 'e2e',
