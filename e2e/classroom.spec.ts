@@ -310,16 +310,23 @@ test.describe('the classroom', () => {
     await expect(page.locator('.phase-legend').getByText('rewired')).toBeInViewport({ ratio: 1 });
   });
 
-  test('a shared link restores the model, the selection and the view', async ({ page, context }) => {
+  test('a shared link restores the model, the selection with its breadcrumb, and the view', async ({ page, context }) => {
     await openApp(page, 'torus.off');
     await page.evaluate(() => window.halfedgeLab.select('h42'));
+    await page.keyboard.press('n');
+    await page.keyboard.press('t');
+    const { selection, breadcrumb } = await page.evaluate(() => window.halfedgeLab.state());
+    expect(breadcrumb).toHaveLength(3);
     await page.getByRole('button', { name: 'Copy a link to this view' }).click();
     const link = await page.locator('#status').evaluate((node) => /http\S+/.exec(node.textContent ?? '')![0]);
     expect(link).toContain('model=torus.off');
-    expect(link).toContain('select=h42');
+    // the breadcrumb's start and the pointers walked from it, readable
+    expect(link).toContain('select=h42&walk=next,twin&');
     const second = await context.newPage();
     await second.goto(link);
-    await second.waitForFunction(() => window.halfedgeLab?.state().selection === 'h42');
+    await second.waitForFunction((selection) => window.halfedgeLab?.state().selection === selection, selection);
+    expect(await second.evaluate(() => window.halfedgeLab.state().breadcrumb)).toEqual(breadcrumb);
+    await expect(second.locator('#breadcrumb')).toHaveText(await page.locator('#breadcrumb').innerText());
     expect(await second.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('torus.off');
     const here = await page.evaluate(() => window.halfedgeLab.screenPosition('h42'));
     const there = await second.evaluate(() => window.halfedgeLab.screenPosition('h42'));
@@ -338,7 +345,9 @@ test.describe('the classroom', () => {
     const here = await counts(page);
     const link = await page.evaluate(() => window.halfedgeLab.shareLink());
     expect(link).toContain('model=torus.off');
-    expect(link).toContain('ops=');
+    // the steps as calls with their settings, nothing percent-encoded
+    expect(link).toContain('&ops=cut(plane:0/0/1/0,keep:above);triangulate-mesh&');
+    expect(link).not.toContain('%');
     await expect(page.locator('#status')).toContainText('replays 2 steps');
     const second = await context.newPage();
     await second.goto(link);

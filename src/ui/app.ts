@@ -474,10 +474,13 @@ export class App {
   viewState(): ViewState {
     const camera = this.viewer.camera;
     const { model, steps } = this.snapshot ? replayable(this.snapshot) : { model: null, steps: [] };
+    // the breadcrumb: where it starts, and the pointers followed from there to the selection
+    const [start, ...walked] = this.inspection.path;
     return {
       model,
       steps,
-      selection: this.inspection.selection,
+      selection: start?.to ?? this.inspection.selection,
+      walk: walked.flatMap((step) => (step.move ? [step.move] : [])),
       naming: this.inspection.convention,
       camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom, shift: this.viewer.targetShift },
       mode: this.viewer.mode,
@@ -494,8 +497,13 @@ export class App {
     }
     if (state.camera) this.viewer.setCamera(state.camera.position, state.camera.target, state.camera.zoom, state.camera.shift);
     if (state.selection && this.mesh) {
-      if (exists(this.mesh, state.selection)) this.select(state.selection);
-      else this.say(`This link selects ${elementName(state.selection)}, which ${this.snapshot?.file?.name ?? 'this mesh'} does not have.`, 'alert');
+      if (!exists(this.mesh, state.selection)) {
+        this.say(`This link selects ${elementName(state.selection)}, which ${this.snapshot?.file?.name ?? 'this mesh'} does not have.`, 'alert');
+        return;
+      }
+      this.select(state.selection);
+      // the walk stops where a pointer leads nowhere (the walk's own message says why)
+      for (const move of state.walk) if (!this.walk(move)) break;
     }
   }
 

@@ -1,12 +1,14 @@
 /**
  * A link that restores what a lecturer shows: the sample model, the operations and edits that led
- * from it to the mesh on screen (replayed on opening), the selection and the camera.
- * `?model=torus.off&ops=[…]&select=h17&naming=target&camera=…&mode=top`. Uploaded files never leave the
+ * from it to the mesh on screen (replayed on opening), the selection with the walk that led to it
+ * (the breadcrumb), and the camera, written to be read:
+ * `?model=torus.off&ops=cut(plane:0/0/1/0,keep:above);flip-edge(edge:3)&select=h17&walk=next,twin&naming=target&camera=…&mode=top`.
+ * Links written before, whose steps were JSON, still open. Uploaded files never leave the
  * browser, so a link can only name a sample model.
  */
 import type { EditRequest, OperationRequest, Snapshot } from '../workers/protocol.js';
 import type { Convention } from './records.js';
-import { parseElementName, type Selection } from './selection.js';
+import { isMove, type Move, parseElementName, type Selection } from './selection.js';
 
 /** One step from the sample to what is on screen: an operation run to its end, or a local edit. */
 export type ReplayStep = { kind: 'operation'; request: OperationRequest } | { kind: 'edit'; request: EditRequest };
@@ -15,7 +17,10 @@ export interface ViewState {
   model: string | null;
   /** The steps from the model to the mesh shown, in order. */
   steps: ReplayStep[];
+  /** Where the breadcrumb starts (the selection itself when nothing was walked)… */
   selection: Selection | null;
+  /** …and the pointers followed from there to the selection. */
+  walk: Move[];
   /** The halfedge naming the view speaks (origin or target); null: the page's default. */
   naming: Convention | null;
   /**
@@ -27,17 +32,63 @@ export interface ViewState {
 }
 
 export function encodeViewState(state: ViewState): string {
-  const params = new URLSearchParams();
-  if (state.model) params.set('model', state.model);
-  if (state.steps.length > 0) params.set('ops', JSON.stringify(state.steps));
-  if (state.selection) params.set('select', `${{ vertex: 'v', edge: 'e', face: 'f', halfedge: 'h' }[state.selection.kind]}${state.selection.id}`);
-  if (state.naming) params.set('naming', state.naming);
+  const params: Array<[string, string]> = [];
+  if (state.model) params.push(['model', state.model]);
+  if (state.steps.length > 0) params.push(['ops', state.steps.map(stepText).join(';')]);
+  if (state.selection) params.push(['select', `${{ vertex: 'v', edge: 'e', face: 'f', halfedge: 'h' }[state.selection.kind]}${state.selection.id}`]);
+  if (state.selection && state.walk.length > 0) params.push(['walk', state.walk.join(',')]);
+  if (state.naming) params.push(['naming', state.naming]);
   if (state.camera) {
     const numbers = [...state.camera.position, ...state.camera.target, state.camera.zoom, ...state.camera.shift].map((x) => +x.toPrecision(6));
-    params.set('camera', numbers.join(','));
+    params.push(['camera', numbers.join(',')]);
   }
-  if (state.mode) params.set('mode', state.mode);
-  return params.toString();
+  if (state.mode) params.push(['mode', state.mode]);
+  // the separators the steps and the camera use mean nothing else in a query: left as they are, so the link reads
+  return params.map(([key, value]) => `${key}=${encodeURIComponent(value).replace(/%(2C|3A|3B|2F)/g, (escape) => decodeURIComponent(escape))}`).join('&');
+}
+
+/** The kinds of request that are operations; any other is an edit. */
+const operationKinds = new Set(['subdivide', 'cut', 'smooth', 'decimate']);
+/** The operations whose settings a request keeps under `options`. */
+const withOptions = new Set(['smooth', 'decimate']);
+
+/**
+ * One step as text: its kind, then its settings as `name:value` (a list of numbers joined by
+ * `/`), `cut(plane:0/0/1/0,keep:above)`; an operation's `options` are written as settings of its own.
+ */
+function stepText({ request }: ReplayStep): string {
+  const { kind, ...rest } = request as { kind: string } & Record<string, unknown>;
+  const settings = withOptions.has(kind) ? (rest.options as Record<string, unknown>) : rest;
+  const fields = Object.entries(settings)
+    .filter(([, value]) => value !== undefined)
+    .map(([name, value]) => `${name}:${Array.isArray(value) ? value.join('/') : String(value)}`);
+  return fields.length > 0 ? `${kind}(${fields.join(',')})` : kind;
+}
+
+/** A step's text read back; null when it is not one (the session checks each request again as it runs it). */
+function parseStep(text: string): ReplayStep | null {
+  const match = /^([a-z0-9-]+)(?:\((.*)\))?$/.exec(text);
+  if (!match) return null;
+  const [, kind, inside] = match;
+  const settings: Record<string, unknown> = {};
+  for (const field of inside ? inside.split(',') : []) {
+    const colon = field.indexOf(':');
+    if (colon <= 0) return null;
+    const name = field.slice(0, colon);
+    // a name from a link is data: never one that reaches an object's prototype
+    if (!/^[a-zA-Z]+$/.test(name)) return null;
+    settings[name] = fieldValue(field.slice(colon + 1));
+  }
+  if (!operationKinds.has(kind!)) return { kind: 'edit', request: { kind, ...settings } as EditRequest };
+  const request = withOptions.has(kind!) ? { kind, options: settings } : { kind, ...settings };
+  return { kind: 'operation', request: request as OperationRequest };
+}
+
+/** A setting's value: a list of numbers, a number, true or false, or a word. */
+function fieldValue(text: string): unknown {
+  if (text.includes('/')) return text.split('/').map(Number);
+  if (text === 'true' || text === 'false') return text === 'true';
+  return text !== '' && Number.isFinite(Number(text)) ? Number(text) : text;
 }
 
 /** Reads a query string; anything malformed is left out rather than trusted. */
@@ -60,6 +111,7 @@ export function decodeViewState(query: string): ViewState {
     model: params.get('model'),
     steps: replaySteps(params.get('ops')),
     selection: parseElementName(params.get('select') ?? ''),
+    walk: walkMoves(params.get('walk')),
     naming: naming === 'origin' || naming === 'target' ? naming : null,
     camera,
     mode: mode === 'top' || mode === 'perspective' ? mode : null,
@@ -67,23 +119,35 @@ export function decodeViewState(query: string): ViewState {
 }
 
 /**
- * The steps of a link, each an operation or an edit with a request object; anything else makes
- * the whole list untrusted and left out (the session checks each request again as it runs it).
+ * The steps of a link: the readable form, or the JSON of links written before it, each an
+ * operation or an edit with a request object; anything else makes the whole list untrusted and
+ * left out (the session checks each request again as it runs it).
  */
 function replaySteps(text: string | null): ReplayStep[] {
   if (!text) return [];
+  const steps = text.startsWith('[') ? jsonSteps(text) : text.split(';').map(parseStep);
+  const isStep = (step: unknown): step is ReplayStep =>
+    typeof step === 'object' &&
+    step !== null &&
+    ((step as ReplayStep).kind === 'operation' || (step as ReplayStep).kind === 'edit') &&
+    typeof (step as ReplayStep).request === 'object' &&
+    (step as ReplayStep).request !== null;
+  return Array.isArray(steps) && steps.length <= 100 && steps.every(isStep) ? steps : [];
+}
+
+function jsonSteps(text: string): unknown {
   try {
-    const steps: unknown = JSON.parse(text);
-    const isStep = (step: unknown): step is ReplayStep =>
-      typeof step === 'object' &&
-      step !== null &&
-      ((step as ReplayStep).kind === 'operation' || (step as ReplayStep).kind === 'edit') &&
-      typeof (step as ReplayStep).request === 'object' &&
-      (step as ReplayStep).request !== null;
-    return Array.isArray(steps) && steps.length <= 100 && steps.every(isStep) ? steps : [];
+    return JSON.parse(text);
   } catch {
-    return [];
+    return null;
   }
+}
+
+/** The moves of a link's walk (`next,twin,prev.twin`); any that is not a move makes the walk left out. */
+function walkMoves(text: string | null): Move[] {
+  if (!text) return [];
+  const moves = text.split(',');
+  return moves.length <= 1000 && moves.every(isMove) ? moves : [];
 }
 
 /** The history entry that opened the model the current mesh came from, or null. */

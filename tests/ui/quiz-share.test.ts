@@ -73,11 +73,41 @@ describe('share links', () => {
         { kind: 'edit' as const, request: { kind: 'flip-edge' as const, edge: 3 } },
       ],
       selection: { kind: 'halfedge' as const, id: 17 },
+      walk: ['next' as const, 'twin' as const, 'prev.twin' as const],
       naming: 'target' as const,
       camera: { position: [1, 2.5, -3], target: [0, 0, 0.25], zoom: 1.5, shift: [0.125, -0.0625] as [number, number] },
       mode: 'top' as const,
     };
     expect(decodeViewState(encodeViewState(state))).toEqual(state);
+  });
+
+  it('are written to be read: steps as calls with their settings, the walk as its moves, nothing percent-encoded', () => {
+    const steps = [
+      { kind: 'operation' as const, request: { kind: 'subdivide' as const, scheme: 'loop' as const, level: 0 } },
+      { kind: 'operation' as const, request: { kind: 'cut' as const, plane: [0, 0.5, 1, -0.25] as [number, number, number, number], keep: 'both' as const, cap: false } },
+      { kind: 'operation' as const, request: { kind: 'smooth' as const, options: { method: 'taubin' as const, iterations: 3, lambda: 0.5, mu: -0.53 } } },
+      { kind: 'operation' as const, request: { kind: 'decimate' as const, options: { targetFaces: 100 } } },
+      { kind: 'edit' as const, request: { kind: 'split-edge' as const, edge: 12, triangulate: true } },
+      { kind: 'edit' as const, request: { kind: 'triangulate-mesh' as const } },
+    ];
+    const state = { model: 'torus.off', steps, selection: { kind: 'halfedge' as const, id: 4 }, walk: ['next' as const, 'twin.next' as const], naming: null, camera: { position: [1, 2, 3], target: [0, 0, 0], zoom: 1, shift: [0, 0] as [number, number] }, mode: null };
+    const query = encodeViewState(state);
+    expect(query).toBe(
+      'model=torus.off&ops=subdivide(scheme:loop,level:0);cut(plane:0/0.5/1/-0.25,keep:both,cap:false);smooth(method:taubin,iterations:3,lambda:0.5,mu:-0.53);' +
+        'decimate(targetFaces:100);split-edge(edge:12,triangulate:true);triangulate-mesh&select=h4&walk=next,twin.next&camera=1,2,3,0,0,0,1,0,0',
+    );
+    expect(decodeViewState(query)).toEqual(state);
+  });
+
+  it('open links written before, whose steps were JSON', () => {
+    const steps = [{ kind: 'edit', request: { kind: 'flip-edge', edge: 3 } }];
+    expect(decodeViewState(new URLSearchParams({ model: 'torus.off', ops: JSON.stringify(steps), select: 'h17' }).toString())).toMatchObject({ steps, selection: { kind: 'halfedge', id: 17 }, walk: [] });
+  });
+
+  it('leave out steps and walks that are not what they claim', () => {
+    expect(decodeViewState('ops=flip-edge(edge:3);eval(alert(1))').steps).toEqual([]);
+    expect(decodeViewState('ops=flip-edge(__proto__:3)').steps).toEqual([]);
+    expect(decodeViewState('select=h1&walk=next,sideways').walk).toEqual([]);
   });
 
   it('read a link made before the camera kept its shift as one whose target is in the middle', () => {
@@ -89,6 +119,7 @@ describe('share links', () => {
       model: 'cube.off',
       steps: [],
       selection: null,
+      walk: [],
       naming: null,
       camera: null,
       mode: null,
