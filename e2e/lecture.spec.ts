@@ -82,3 +82,24 @@ test.describe('the words of the lecture', () => {
     await expect(page.locator('#hud [data-count="genus"]')).toHaveText('0 + 0 + 0 + 0 + …');
   });
 });
+
+test.describe('the cutting plane', () => {
+  for (const end of ['step', 'cancel'] as const) {
+    test(`is hidden once the cut ends (${end === 'step' ? 'stepped to its end' : 'cancelled'})`, async ({ page }) => {
+      await openApp(page, 'torus.off');
+      await page.getByRole('tab', { name: 'Operate' }).click();
+      await page.getByRole('spinbutton', { name: 'Plane coefficient c' }).fill('1');
+      await page.getByRole('spinbutton', { name: 'Plane coefficient b' }).fill('0');
+      const show = page.getByRole('button', { name: 'Show plane' });
+      await show.click();
+      expect((await state(page)).planeShown).toBe(true);
+      await page.locator('[data-operation="cut"]').click();
+      await expect.poll(async () => (await state(page)).stepping).not.toBeNull();
+      if (end === 'step') {
+        while ((await state(page)).stepping) await page.evaluate(() => window.halfedgeLab.step());
+      } else await page.evaluate(() => window.halfedgeLab.cancel());
+      expect((await state(page)).planeShown).toBe(false);
+      await expect(show).toHaveAttribute('aria-pressed', 'false');
+    });
+  }
+});

@@ -358,6 +358,9 @@ export class App {
     // while stepping, the Operate tab puts the stepper's buttons first
     this.frame.classList.toggle('stepping', snapshot.stepping !== null);
     this.drawLegend();
+    // an operation that ended (run through or cancelled) takes the plane away: its square tints
+    // the view, and its preview shows where it crossed the mesh before
+    if (before?.stepping && !snapshot.stepping) this.operations.hidePlane();
     const stepping = steppingTitle(snapshot);
     if (stepping) this.say(`${stepping}.`);
     else if (before?.stepping && !frame) {
@@ -486,6 +489,11 @@ export class App {
     // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
     if (on && !document.fullscreenElement) this.frame.requestFullscreen?.().catch(() => {});
     if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
+  }
+
+  /** Whether the cutting plane gizmo is on the view. */
+  get planeShown(): boolean {
+    return this.gizmo.shown;
   }
 
   /** Shows or hides the cutting plane gizmo at `plane`. */

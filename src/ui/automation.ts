@@ -141,6 +141,8 @@ export function automation(app: App) {
       repairs: app.snapshot?.report?.repairs.map((r) => ({ kind: r.kind, count: r.count })) ?? [],
       /** Whether the seams are marked in the view. */
       seamsShown: app.seamsShown,
+      /** Whether the cutting plane gizmo is on the view (Show plane); an operation's end hides it. */
+      planeShown: app.planeShown,
       /** Each boundary loop of the mesh on screen: one of its boundary halfedges and its number of edges. */
       boundaryLoops: app.boundaryLoops().map(({ halfedge, length }) => ({ halfedge, length })),
       phase: phaseState(app.snapshot),
