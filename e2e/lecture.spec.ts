@@ -47,9 +47,8 @@ test.describe('the words of the lecture', () => {
     const list = page.getByRole('list', { name: 'Boundary loops' });
     for (const [i, { length }] of boundaryLoops.entries()) await expect(list).toContainText(`loop ${i + 1}: ${length} edges`);
 
-    // the shorter loop (the inner rim) is smaller than the mesh: framing it moves the camera closer
-    const inner = boundaryLoops[0]!.length < boundaryLoops[1]!.length ? 0 : 1;
-    const spread = () =>
+    // the inner rim, the loop drawn smaller, is smaller than the mesh: framing it brings the camera closer
+    const spread = (loop: number) =>
       page.evaluate((h) => {
         const lab = window.halfedgeLab;
         const names = [`h${h}`];
@@ -59,12 +58,13 @@ test.describe('the words of the lecture', () => {
         const canvas = document.querySelector('#viewport canvas')!.getBoundingClientRect();
         const inView = points.every((p) => p.visible && p.x >= 0 && p.y >= 0 && p.x <= canvas.width && p.y <= canvas.height);
         return { width: Math.max(...xs) - Math.min(...xs), inView };
-      }, boundaryLoops[inner]!.halfedge);
-    const before = await spread();
+      }, boundaryLoops[loop]!.halfedge);
+    const widths = [(await spread(0)).width, (await spread(1)).width];
+    const inner = widths[0]! < widths[1]! ? 0 : 1;
     await page.getByRole('button', { name: `Frame boundary loop ${inner + 1}` }).click();
-    const after = await spread();
+    const after = await spread(inner);
     expect(after.inView).toBe(true);
-    expect(after.width).toBeGreaterThan(1.3 * before.width);
+    expect(after.width).toBeGreaterThan(1.3 * widths[inner]!);
     expect((await state(page)).selection).toBe(`h${boundaryLoops[inner]!.halfedge}`);
     expect(await page.evaluate(() => window.halfedgeLab.frameBoundaryLoop(5))).toBe(false);
   });
