@@ -454,10 +454,11 @@ export class App {
     const loop = this.boundaryLoops()[index];
     if (!this.mesh || !loop) return false;
     this.select({ kind: 'halfedge', id: loop.halfedge });
+    // said first: framing keeps the loop clear of the status line as it will read
+    this.say(`Boundary loop ${index + 1}: ${loop.length} edge${loop.length === 1 ? '' : 's'}, from h${loop.halfedge}; walk next to go round it.`);
     const { box, radius, facing } = loopBounds(this.mesh, loop.halfedge);
     this.viewer.frame(box, this.viewNormal(), radius, facing ?? undefined);
     this.framedWhole = false;
-    this.say(`Boundary loop ${index + 1}: ${loop.length} edge${loop.length === 1 ? '' : 's'}, from h${loop.halfedge}; walk next to go round it.`);
     return true;
   }
 
