@@ -34,6 +34,11 @@ export interface MeshStats {
   eulerCharacteristic: number;
   /** Sum of the components' genera; null with no faces or when a component is non-orientable. */
   genus: number | null;
+  /**
+   * Each component's genus, in the order of `componentDetails`; null for a non-orientable one. Two
+   * tori read `[1, 1]`, where `genus` alone (2) would say one double torus.
+   */
+  genusPerPart: (number | null)[];
   closed: boolean;
   /** False when the build had to split non-manifold edges or vertices. */
   manifold: boolean;
@@ -150,6 +155,7 @@ export function meshStats(mesh: HalfedgeMesh, report?: BuildReport): MeshStats {
       components.length > 0 && components.every((c) => c.genus !== null)
         ? components.reduce((sum, c) => sum + (c.genus ?? 0), 0)
         : null,
+    genusPerPart: components.map((c) => c.genus),
     closed,
     manifold,
     orientable,

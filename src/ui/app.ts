@@ -11,12 +11,12 @@ import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import type { StudentVerb, VerbArguments } from '../workers/protocol.js';
 import { byId, capitalized, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, problemHighlight, quizHighlight } from './highlights.js';
-import { meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
+import { boundaryLoopList, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
 import { incidentTarget, renderFileInfo } from './panels/file-info.js';
 import { renderHelp } from './panels/help.js';
 import { HistoryPanel } from './panels/history.js';
-import { renderHud } from './panels/hud.js';
+import { type BoundaryLoop, renderHud } from './panels/hud.js';
 import { renderInspector } from './panels/inspector.js';
 import { renderLegend, renderValuesLegend } from './panels/legend.js';
 import { OperationsPanel } from './panels/operations.js';
@@ -103,6 +103,8 @@ export class App {
   private framedWhole = false;
   /** The phase marks last worked out, and the snapshot they are of (see `phaseMarks`). */
   private marked: { snapshot: Snapshot; marks: HighlightSpec } | null = null;
+  /** The boundary loops last listed, and the snapshot they are of (see `boundaryLoops`). */
+  private loops: { snapshot: Snapshot; loops: BoundaryLoop[] } | null = null;
   private readonly gizmo: PlaneGizmo;
   private readonly detail: ViewDetail;
   private markReady!: () => void;
@@ -356,6 +358,9 @@ export class App {
     // while stepping, the Operate tab puts the stepper's buttons first
     this.frame.classList.toggle('stepping', snapshot.stepping !== null);
     this.drawLegend();
+    // an operation that ended (run through or cancelled) takes the plane away: its square tints
+    // the view, and its preview shows where it crossed the mesh before
+    if (before?.stepping && !snapshot.stepping) this.operations.hidePlane();
     const stepping = steppingTitle(snapshot);
     if (stepping) this.say(`${stepping}.`);
     else if (before?.stepping && !frame) {
@@ -430,6 +435,33 @@ export class App {
     this.framedWhole = false;
   }
 
+  /**
+   * The boundary loops of the mesh on screen (one halfedge and the number of edges of each),
+   * listed once per snapshot: the counts are drawn again at every selection.
+   */
+  boundaryLoops(): BoundaryLoop[] {
+    const snapshot = this.snapshot;
+    if (!snapshot) return [];
+    if (this.loops?.snapshot !== snapshot) this.loops = { snapshot, loops: boundaryLoopList(snapshot.mesh) };
+    return this.loops.loops;
+  }
+
+  /**
+   * Selects boundary loop `index`'s halfedge (a walk along next goes round it) and frames the
+   * whole loop, seen along its axis. Returns false when there is no such loop.
+   */
+  frameBoundaryLoop(index: number): boolean {
+    const loop = this.boundaryLoops()[index];
+    if (!this.mesh || !loop) return false;
+    this.select({ kind: 'halfedge', id: loop.halfedge });
+    // said first: framing keeps the loop clear of the status line as it will read
+    this.say(`Boundary loop ${index + 1}: ${loop.length} edge${loop.length === 1 ? '' : 's'}, from h${loop.halfedge}; walk next to go round it.`);
+    const { box, radius, facing } = loopBounds(this.mesh, loop.halfedge);
+    this.viewer.frame(box, this.viewNormal(), radius, facing ?? undefined);
+    this.framedWhole = false;
+    return true;
+  }
+
   /** The direction the top view looks along: the plane of a 2D mesh, else z. */
   private viewNormal(): Vector3 {
     const normal = this.snapshot?.render.planeNormal;
@@ -458,6 +490,11 @@ export class App {
     // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
     if (on && !document.fullscreenElement) this.frame.requestFullscreen?.().catch(() => {});
     if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
+  }
+
+  /** Whether the cutting plane gizmo is on the view. */
+  get planeShown(): boolean {
+    return this.gizmo.shown;
   }
 
   /** Shows or hides the cutting plane gizmo at `plane`. */
@@ -743,7 +780,10 @@ export class App {
     renderBreadcrumb(this.byId('breadcrumb'), this.inspection.path);
     if (this.mesh && snapshot) this.operations.update(this.mesh, this.inspection.selection, snapshot.unavailable);
     if (snapshot) {
-      renderHud(this.byId('hud'), snapshot.stats, snapshot.problems, (s) => this.select(s));
+      renderHud(this.byId('hud'), snapshot.stats, snapshot.problems, this.boundaryLoops(), {
+        select: (s) => this.select(s),
+        frameLoop: (i) => this.frameBoundaryLoop(i),
+      });
       renderFileInfo(this.byId('file-info'), snapshot.file, snapshot.report, {
         showProblem: (incident, kind, first) => this.showProblem(incident, kind, first),
         toggleSeams: () => void this.toggleSeams(),

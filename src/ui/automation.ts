@@ -82,6 +82,8 @@ export function automation(app: App) {
     /** Marks the seams (edges where the file split its vertices; the File tab's button) or clears them; resolves to how many were marked. */
     showSeams: (on: boolean) => app.toggleSeams(on),
     setPresentation: (on: boolean) => app.setPresentation(on),
+    /** Selects boundary loop `index`'s halfedge and frames the loop (the HUD's “frame” button); false when there is no such loop. */
+    frameBoundaryLoop: (index: number) => app.frameBoundaryLoop(index),
     /** The student's verbs (protocol.ts): `start(request)`, `step()`, `runToEnd()`, `cancel()`, `edit(request)`, `undo()`, `redo()`, `jump(index)`; each resolves to `{ version }`, or null when refused (the page says why). */
     ...(Object.fromEntries(studentVerbNames.map((verb) => [verb, (...args: unknown[]) => (app.request as (verb: StudentVerb, ...args: unknown[]) => Promise<Snapshot | null>)(verb, ...args).then(summary)])) as SnapshotVerbs<
       Promise<{ version: number } | null>,
@@ -139,6 +141,10 @@ export function automation(app: App) {
       repairs: app.snapshot?.report?.repairs.map((r) => ({ kind: r.kind, count: r.count })) ?? [],
       /** Whether the seams are marked in the view. */
       seamsShown: app.seamsShown,
+      /** Whether the cutting plane gizmo is on the view (Show plane); an operation's end hides it. */
+      planeShown: app.planeShown,
+      /** Each boundary loop of the mesh on screen: one of its boundary halfedges and its number of edges. */
+      boundaryLoops: app.boundaryLoops().map(({ halfedge, length }) => ({ halfedge, length })),
       phase: phaseState(app.snapshot),
       /** True until the full counts and checks of the last change have arrived (`stats` beyond V, E, F, χ; `problems`). */
       pending: app.snapshot?.pending ?? false,

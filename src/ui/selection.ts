@@ -88,7 +88,7 @@ export function walk(mesh: HalfedgeMesh, from: Selection, move: Move): Selection
       return { kind: 'halfedge', id: mesh.twin(h) };
     case 'face': {
       const f = mesh.face(h);
-      return f < 0 ? `${name} is a boundary halfedge: it runs around a hole and has no face` : { kind: 'face', id: f };
+      return f < 0 ? `${name} is a boundary halfedge: it runs along a boundary loop and has no face` : { kind: 'face', id: f };
     }
     case 'origin':
       return { kind: 'vertex', id: mesh.origin(h) };

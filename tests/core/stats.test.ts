@@ -75,6 +75,18 @@ describe('meshStats', () => {
     expect(stats.eulerCharacteristic).toBe(2 + 0 + 2);
   });
 
+  it('gives each part its genus: two tori are 1 + 1, not a double torus', () => {
+    const stats = meshStats(buildMesh(mergeSoups([torus(6, 4), torus(5, 3)])).mesh);
+    expect(stats.genusPerPart).toEqual([1, 1]);
+    expect(stats.genus).toBe(2);
+  });
+
+  it('gives a torus and a sphere their genera in component order', () => {
+    const stats = meshStats(buildMesh(mergeSoups([torus(6, 4), uvSphere(4, 6)])).mesh);
+    expect(stats.genusPerPart).toEqual([1, 0]);
+    expect(stats.genus).toBe(1);
+  });
+
   it('counts zero-area triangles apart in the quality figures', () => {
     const { mesh } = buildMesh(soupFromArrays([0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0], [[0, 1, 2], [0, 1, 3]]));
     const quality = triangleQuality(mesh)!;

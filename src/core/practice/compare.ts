@@ -42,7 +42,7 @@ export function compareMeshes(yours: HalfedgeMesh, reference: HalfedgeMesh): str
   }
   for (const { id, corners } of yourHoles) {
     if (!referenceHoles.has(canonical(mapped(corners)))) {
-      return `the boundary loop through your h${id} (${corners.map((v) => `v${v}`).join(' → ')}) is not a hole of the library's result`;
+      return `the boundary loop through your h${id} (${corners.map((v) => `v${v}`).join(' → ')}) is not a boundary loop of the library's result`;
     }
   }
   const referenceEdges = new Set<string>();

@@ -252,6 +252,13 @@ export class OperationsPanel {
     if (face >= 0) this.actions.edit({ kind: 'split-face', face, from: Number(this.splitFrom.value), to: Number(this.splitTo.value) });
   }
 
+  /** Hides the plane gizmo and unpresses its button (an operation ended: see App.show). */
+  hidePlane(): void {
+    this.gizmoShown = false;
+    this.gizmoButton.setAttribute('aria-pressed', 'false');
+    this.actions.showPlane(null);
+  }
+
   private toggleGizmo(): void {
     this.gizmoShown = !this.gizmoShown;
     this.gizmoButton.setAttribute('aria-pressed', String(this.gizmoShown));

@@ -68,6 +68,10 @@ export class PlaneGizmo {
     this.viewer.requestRender();
   }
 
+  get shown(): boolean {
+    return this.group.visible;
+  }
+
   hide(): void {
     this.group.visible = false;
     this.controls.enabled = false;
