@@ -5,7 +5,7 @@
  * a solution that runs out of memory told so).
  */
 import { expect, type Page, test } from '@playwright/test';
-import { openApp } from './helpers.js';
+import { appErrors, openApp } from './helpers.js';
 
 /**
  * Where the key help stands: whether it is what shows at its own centre and over every label of
@@ -69,4 +69,16 @@ test.describe('the key help', () => {
       });
     }
   }
+});
+
+test('after a file is opened from the picker, the keys work at once', async ({ page }) => {
+  await openApp(page, 'disk.off');
+  const input = page.locator('#file-input');
+  // where choosing a file leaves the focus: on the picker's input
+  await input.focus();
+  await input.setInputFiles({ name: 'triangle.off', mimeType: 'text/plain', buffer: Buffer.from('OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n') });
+  await expect(page.locator('#status')).toHaveText('Opened triangle.off.');
+  await page.keyboard.press('m');
+  await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', 'true');
+  expect(appErrors(page)).toEqual([]);
 });
