@@ -82,3 +82,28 @@ test('after a file is opened from the picker, the keys work at once', async ({ p
   await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', 'true');
   expect(appErrors(page)).toEqual([]);
 });
+
+test('the glTF export says, before saving, how many polygons become how many triangles', async ({ page }) => {
+  for (const [width, height] of [
+    [1280, 720],
+    [1024, 768],
+  ] as const) {
+    await page.setViewportSize({ width, height });
+    await openApp(page, 'torus.off');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    const note = page.locator('#gltf-note');
+    await expect(note).toHaveText('glTF holds only triangles: the 128 quads become 256 triangles. The other formats keep the faces as they are.');
+    await expect(page.getByRole('button', { name: 'Export the mesh as glTF (.glb)' })).toHaveAccessibleDescription(/the 128 quads become 256 triangles/);
+    for (const presentation of [false, true]) {
+      if (presentation) await page.keyboard.press('m');
+      await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', String(presentation));
+      await note.scrollIntoViewIfNeeded();
+      await expect(note).toBeInViewport({ ratio: 1 });
+      await page.screenshot({ path: `/tmp/lecture-gltf-${width}x${height}${presentation ? '-presentation' : ''}.png` });
+    }
+  }
+  // a mesh of triangles only: nothing to say
+  expect(await page.evaluate(() => window.halfedgeLab.openSample('tetrahedron.off'))).toBe(true);
+  await expect(page.locator('#gltf-note')).toBeHidden();
+  expect(appErrors(page)).toEqual([]);
+});
