@@ -107,3 +107,23 @@ test('the glTF export says, before saving, how many polygons become how many tri
   await expect(page.locator('#gltf-note')).toBeHidden();
   expect(appErrors(page)).toEqual([]);
 });
+
+test.describe('Practice', () => {
+  test('opening the tab logs no Content-Security-Policy error, and Ctrl+Enter twice runs once without a page error', async ({ page }) => {
+    await openApp(page, 'disk.off');
+    const pageErrors: string[] = [];
+    page.on('pageerror', (error) => pageErrors.push(error.message));
+    const consoleErrors: string[] = [];
+    page.on('console', (message) => void (message.type() === 'error' && consoleErrors.push(message.text())));
+    await page.getByRole('tab', { name: 'Practice' }).click();
+    await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
+    await page.locator('.practice-editor .cm-content').click();
+    expect(consoleErrors.filter((text) => /Content.Security.Policy/i.test(text))).toEqual([]);
+
+    await page.keyboard.press('Control+Enter');
+    await page.keyboard.press('Control+Enter');
+    await expect(page.locator('.practice-summary')).toHaveText(/checks pass\.$/, { timeout: 15_000 });
+    expect(pageErrors).toEqual([]);
+    expect(appErrors(page)).toEqual([]);
+  });
+});
