@@ -5,7 +5,7 @@
  * a solution that runs out of memory told so).
  */
 import { expect, type Page, test } from '@playwright/test';
-import { appErrors, openApp } from './helpers.js';
+import { appErrors, openApp, openAppAt } from './helpers.js';
 
 /**
  * Where the key help stands: whether it is what shows at its own centre and over every label of
@@ -124,6 +124,19 @@ test.describe('Practice', () => {
     await page.keyboard.press('Control+Enter');
     await expect(page.locator('.practice-summary')).toHaveText(/checks pass\.$/, { timeout: 15_000 });
     expect(pageErrors).toEqual([]);
+    expect(appErrors(page)).toEqual([]);
+  });
+
+  test('a solution that allocates without bound is told it used too much memory', async ({ page }) => {
+    await openAppAt(page, '/?exercise=vertex-degree');
+    await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
+    await page.evaluate(() =>
+      window.halfedgeLab.practice.setCode('export default function (mesh, v) {\n  const all = [];\n  for (;;) all.push(new Array(1e5).fill(v));\n}\n'),
+    );
+    const result = await page.evaluate(() => window.halfedgeLab.practice.run());
+    expect(result.checks[0].message).toMatch(/memory/);
+    expect(result.checks[0].message).not.toMatch(/loop/);
+    await expect(page.locator('.practice-checks')).toContainText('memory');
     expect(appErrors(page)).toEqual([]);
   });
 });
