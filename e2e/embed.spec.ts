@@ -129,6 +129,20 @@ test.describe('two <halfedge-view> elements on one page', () => {
     expect(errors).toEqual([]);
   });
 
+  test('select set again to the same value selects again, after the lecturer deselected', async ({ page }) => {
+    const errors = await serveCoursePage(page, twoViews);
+    await page.goto('/course/index.html');
+    await labsReady(page, 'one');
+    await expect.poll(async () => (await stateOf(page, 'one')).selection).toBe('h17');
+    await page.locator('#one').focus();
+    await page.keyboard.press('Escape');
+    await expect.poll(async () => (await stateOf(page, 'one')).selection).toBeNull();
+    // a slide script that shows the same element again
+    await page.evaluate(() => document.getElementById('one')!.setAttribute('select', 'h17'));
+    await expect.poll(async () => (await stateOf(page, 'one')).selection).toBe('h17');
+    expect(errors).toEqual([]);
+  });
+
   test('a src that is not there is said on the view, and the page lives on', async ({ page }) => {
     await serveCoursePage(page, twoViews.replace('/models/cube.off', '/models/no-such-mesh.off'));
     await page.goto('/course/index.html');
@@ -165,4 +179,17 @@ test('?embed in an iframe shows only the view and the chosen panels, and takes t
   await frame.getByRole('button', { name: /walk to next/i }).focus();
   await page.keyboard.press('n');
   await expect.poll(() => lab.evaluate(() => window.halfedgeLab.state().selection)).toBe(next);
+});
+
+test('?embed with a model that is not there says so on the view, beside a panel it does not know', async ({ page }) => {
+  await serveCoursePage(page, `<!doctype html><title>Course page</title><iframe title="Halfedge Lab" width="760" height="420" src="/?embed&panels=walk,wlak&model=no-such-model.off"></iframe>`);
+  await page.goto('/course/index.html');
+  const frame = page.frameLocator('iframe');
+  const lab = page.frames().find((f) => f.url().includes('embed'))!;
+  await lab.waitForFunction(() => window.halfedgeLab !== undefined);
+  await lab.evaluate(() => window.halfedgeLab.ready);
+  await expect(frame.locator('#status')).toContainText('This link names a sample that is not here (no-such-model.off)');
+  await expect(frame.locator('#status')).toContainText('Unknown panel wlak');
+  await expect(frame.locator('#status')).toBeVisible();
+  await expect(frame.locator('#status')).toHaveAttribute('role', 'alert');
 });

@@ -96,6 +96,8 @@ export class App {
   private readonly operations: OperationsPanel;
   private readonly stepper: StepperPanel;
   private readonly history: HistoryPanel;
+  /** Says, beside the glTF export, what it makes of the mesh's polygons. */
+  private readonly exportNote: (faceDegrees: Record<number, number>) => void;
   readonly quiz: QuizPanel;
   /** The Practice tab, loaded with its editor and grader when first asked for (see `practice()`). */
   private practicePanel: Promise<PracticePanel> | null = null;
@@ -185,7 +187,7 @@ export class App {
       select: (s) => this.select(s),
     });
     this.history = new HistoryPanel(this.byId('history'), { undo: () => void this.request('undo'), redo: () => void this.request('redo'), jump: (i) => void this.request('jump', i) });
-    renderExport(this.byId('export'), {
+    this.exportNote = renderExport(this.byId('export'), {
       meshBytes: (format) => this.client.exportMesh(format),
       tablesJson: () => (this.mesh ? JSON.stringify(meshToHalfedgeJSON(this.mesh)) : '{}'),
       png: () => new Promise((resolve, reject) => this.viewer.renderer.domElement.toBlob((blob) => (blob ? resolve(blob) : reject(new Error('no picture'))), 'image/png')),
@@ -784,6 +786,7 @@ export class App {
         select: (s) => this.select(s),
         frameLoop: (i) => this.frameBoundaryLoop(i),
       });
+      this.exportNote(snapshot.stats.faceDegrees);
       renderFileInfo(this.byId('file-info'), snapshot.file, snapshot.report, {
         showProblem: (incident, kind, first) => this.showProblem(incident, kind, first),
         toggleSeams: () => void this.toggleSeams(),

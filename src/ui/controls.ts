@@ -13,6 +13,9 @@ import type { PickFilter } from './scene/picking.js';
 export const tabs = ['inspect', 'operate', 'quiz', 'practice', 'file'] as const;
 export type Tab = (typeof tabs)[number];
 
+/** Where a key press is typing, not a command. */
+const FIELDS = 'input, select, textarea, [contenteditable]';
+
 export interface ControlsHost {
   /** Holds the markup of layout.html. */
   root: Document | ShadowRoot;
@@ -29,8 +32,18 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
   const onChange = (id: string, run: (value: string) => void) =>
     find<HTMLSelectElement>(id).addEventListener('change', (event) => run((event.target as HTMLSelectElement).value));
 
+  // a field that has the focus takes the keys as typing (see the keydown listener below); once a
+  // file is chosen or dropped, they are the view's again at once: the picker leaves the focus on
+  // its input, and a lecturer who opens a file then presses M expects presentation mode
+  const keysToView = () => {
+    const focused = root.activeElement;
+    if (!(focused instanceof HTMLElement) || !focused.closest(FIELDS)) return;
+    focused.blur();
+    if (input instanceof HTMLElement) input.focus(); // an embed hears the keys only while focused
+  };
   const fileInput = find<HTMLInputElement>('file-input');
   fileInput.addEventListener('change', async () => {
+    keysToView();
     await app.opening.openFiles([...(fileInput.files ?? [])]);
     fileInput.value = '';
   });
@@ -65,6 +78,7 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
   target.addEventListener('drop', async (event) => {
     event.preventDefault();
     hint.hidden = true;
+    keysToView();
     await app.opening.openFiles([...(event.dataTransfer?.files ?? [])]);
   });
 
@@ -90,7 +104,7 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
   target.addEventListener('keydown', (event) => {
     // the element pressed on, inside an embed's shadow root too (where event.target is the embed)
     const origin = event.composedPath()[0];
-    if (origin instanceof Element && origin.closest('input, select, textarea, [contenteditable]')) return;
+    if (origin instanceof Element && origin.closest(FIELDS)) return;
     if (!handleKey(app, event)) return;
     event.preventDefault();
     // a key this view used is not also the slide deck's around it (N is "next slide" in reveal.js)

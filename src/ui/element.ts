@@ -64,9 +64,12 @@ export class HalfedgeViewElement extends HTMLElement {
   }
 
   attributeChangedCallback(name: string, before: string | null, after: string | null): void {
-    if (!this.#app || before === after) return;
-    if (name === 'src') void this.#open();
-    else if (name === 'select') this.#applySelection();
+    if (!this.#app) return;
+    // select and naming set again to the same value apply again: the view may have moved away
+    // since (a deselect, a walk, the naming switched through .lab); the same src is not fetched again
+    if (name === 'src') {
+      if (before !== after) void this.#open();
+    } else if (name === 'select') this.#applySelection();
     else this.#applyNaming();
   }
 

@@ -34,7 +34,11 @@ async function openFirstModel(): Promise<void> {
   } else if (await app.opening.openSample(first)) {
     app.say(`This link names a sample that is not here (${state.model}), so ${first} is open instead.`, 'alert');
   }
-  if (params.has('embed') && embed.unknown.length > 0) app.say(unknownPanelsMessage(embed.unknown), 'alert');
+  // after what the link got wrong besides (a model that is not here, a step, a selection), not instead of it
+  if (params.has('embed') && embed.unknown.length > 0) {
+    const before = document.getElementById('status')?.getAttribute('role') === 'alert' ? `${app.message} ` : '';
+    app.say(`${before}${unknownPanelsMessage(embed.unknown)}`, 'alert');
+  }
 }
 
 /** `?exercise=…` opens an exercise in the Practice tab (after the first model: the view is never empty). */

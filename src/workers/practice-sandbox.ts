@@ -8,9 +8,16 @@
  * `Function` constructors), other workers, timers, messaging, and Node's `process` and `require`.
  * Each becomes a getter that throws a sentence naming it, so the student sees the line that tried.
  * There is no DOM in a worker: `document` is simply not defined.
+ *
+ * It also counts the memory the solution's arrays take as they are made and grown, and stops the
+ * solution past `MEMORY_LIMIT_MB`: a browser can neither limit nor measure a worker's memory, and a
+ * worker that reaches the engine's own limit takes the whole page down with it.
  */
 import { deserializeMesh, type SerializedMesh } from '../core/index.js';
-import { type PracticeBudget, runSolution, type RunOutput, type Solution, SOLUTION_FILE, SolutionError, solutionBody, solutionLine } from '../core/practice/index.js';
+import { BudgetError, type PracticeBudget, runSolution, type RunOutput, type Solution, SOLUTION_FILE, SolutionError, solutionBody, solutionLine } from '../core/practice/index.js';
+
+/** Memory a solution may use (its arrays, in the sandbox; the `grade` command's worker thread, in all). */
+export const MEMORY_LIMIT_MB = 256;
 
 export interface SandboxRequest {
   source: string;
@@ -47,8 +54,58 @@ function shut(target: object, name: string): void {
   }
 }
 
-/** Shuts every name in `SHUT` on the global object and its prototypes, and the constructors that compile strings. */
+/** What one value of an array takes, as an engine stores it uncompressed. */
+const BYTES_PER_ELEMENT = 8;
+/** Bytes of arrays the solution made or grew in its run on the current fixture (counted while `metering`). */
+let allocated = 0;
+let metering = false;
+
+function charge(bytes: number): void {
+  if (!metering) return;
+  allocated += bytes;
+  if (allocated > MEMORY_LIMIT_MB * 2 ** 20) throw new BudgetError(`your code used more than ${MEMORY_LIMIT_MB} MB of memory for arrays without returning: a list that keeps growing?`);
+}
+
+/**
+ * Counts what the built-ins that make and grow arrays allocate: the constructors of arrays, typed
+ * arrays and buffers, and the array methods that add elements or return a new array. An array
+ * literal or a string escapes the count; code that keeps making those is stopped by time.
+ */
+function meterArrays(): void {
+  const size = (value: unknown) => (Array.isArray(value) ? value.length * BYTES_PER_ELEMENT : ArrayBuffer.isView(value) || value instanceof ArrayBuffer ? value.byteLength : 0);
+  const made = <T>(result: T) => (charge(size(result)), result);
+  // before Array itself is wrapped: these make their array without calling the constructor again
+  for (const name of ['from', 'of'] as const) {
+    const make = Array[name] as (...args: unknown[]) => unknown[];
+    Object.defineProperty(Array, name, { value: (...args: unknown[]) => made(make.apply(Array, args)), writable: true, configurable: true });
+  }
+  const global = globalThis as unknown as Record<string, object>;
+  const typed = ['Int8Array', 'Uint8Array', 'Uint8ClampedArray', 'Int16Array', 'Uint16Array', 'Int32Array', 'Uint32Array', 'Float32Array', 'Float64Array', 'BigInt64Array', 'BigUint64Array'];
+  for (const name of ['Array', 'ArrayBuffer', ...typed]) {
+    global[name] = new Proxy(global[name] as (...args: unknown[]) => object, {
+      apply: (target, self, args) => made(Reflect.apply(target, self, args)),
+      construct: (target, args, newTarget) => made(Reflect.construct(target, args, newTarget)),
+    });
+  }
+  const methods = Array.prototype as unknown as Record<string, (...args: unknown[]) => unknown>;
+  for (const name of ['push', 'unshift']) {
+    const grow = methods[name]!;
+    methods[name] = function (this: unknown, ...items: unknown[]) {
+      charge(items.length * BYTES_PER_ELEMENT);
+      return Reflect.apply(grow, this, items);
+    };
+  }
+  for (const name of ['concat', 'slice', 'map', 'filter', 'flat', 'flatMap']) {
+    const make = methods[name]!;
+    methods[name] = function (this: unknown, ...args: unknown[]) {
+      return made(Reflect.apply(make, this, args));
+    };
+  }
+}
+
+/** Shuts every name in `SHUT` on the global object and its prototypes, and the constructors that compile strings, and meters arrays. */
 export function lockDown(): void {
+  meterArrays();
   for (let target: object | null = globalThis; target && target !== Object.prototype; target = Object.getPrototypeOf(target)) {
     for (const name of SHUT) if (target === globalThis || Object.hasOwn(target, name)) shut(target, name);
   }
@@ -93,7 +150,11 @@ export function serveRequest(request: SandboxRequest, send: (message: SandboxMes
     return;
   }
   request.runs.forEach((run, index) => {
-    const output = runSolution(solution, deserializeMesh(run.mesh), run.input, lineOffset, request.budget);
+    const mesh = deserializeMesh(run.mesh);
+    allocated = 0;
+    metering = true;
+    const output = runSolution(solution, mesh, run.input, lineOffset, request.budget);
+    metering = false;
     send({ kind: 'output', index, output });
   });
   send({ kind: 'done' });

@@ -63,7 +63,9 @@ describe('grade on the command line', () => {
   it('stops code that allocates without bound at the memory limit', async () => {
     const { status, stdout } = await grade('vertex-degree', wrong('allocates'));
     expect(status).toBe(1);
-    expect(stdout).toContain('your code was stopped: it used more than 256 MB of memory');
+    // the sandbox's count of its arrays, or the worker thread's own limit, whichever comes first
+    expect(stdout).toMatch(/used more than 256 MB of memory/);
+    expect(stdout).not.toContain('loop whose condition never changes');
   });
 
   it('tells code that reaches for the page or the network the line it did so', async () => {

@@ -3,12 +3,11 @@ import { Worker } from 'node:worker_threads';
 import { InvalidInputError } from '../../core/errors.js';
 import { type Exercise, findExercise, exercises, type GradeReport, gradeSolution, parseExercise, SolutionError } from '../../core/practice/index.js';
 import { type SandboxPort, sandboxRunner } from '../../workers/practice-runner.js';
+import { MEMORY_LIMIT_MB } from '../../workers/practice-sandbox.js';
 import { workerEntry } from '../../node/worker-entry.js';
 import { parseOptions, readBytes, UsageError } from '../io.js';
 import type { Command } from './index.js';
 
-/** Memory a solution's worker thread may use before it is stopped. */
-const HEAP_LIMIT_MB = 256;
 
 export const gradeCommand: Command = {
   usage: 'grade EXERCISE SOLUTION.js [--json]',
@@ -87,13 +86,13 @@ function readText(path: string): string {
 const workerFile = workerEntry(import.meta.url, '../grade-worker');
 
 function openWorkerSandbox(): SandboxPort {
-  const worker = new Worker(workerFile.code, { eval: workerFile.eval, resourceLimits: { maxOldGenerationSizeMb: HEAP_LIMIT_MB, maxYoungGenerationSizeMb: 32 }, stdout: true, stderr: true });
+  const worker = new Worker(workerFile.code, { eval: workerFile.eval, resourceLimits: { maxOldGenerationSizeMb: MEMORY_LIMIT_MB, maxYoungGenerationSizeMb: 32 }, stdout: true, stderr: true });
   return {
     post: (request) => worker.postMessage(request),
     listen(onMessage, onFailure) {
       worker.on('message', onMessage);
       worker.on('error', (error: Error & { code?: string }) =>
-        onFailure(new Error(error.code === 'ERR_WORKER_OUT_OF_MEMORY' ? `it used more than ${HEAP_LIMIT_MB} MB of memory` : error.message)),
+        onFailure(new Error(error.code === 'ERR_WORKER_OUT_OF_MEMORY' ? `it used more than ${MEMORY_LIMIT_MB} MB of memory` : error.message)),
       );
     },
     terminate: () => void worker.terminate(),

@@ -64,7 +64,8 @@ export class PracticePanel {
   readonly exercises: Exercise[] = [...exercises];
   exercise: Exercise = exercises[0];
   code = '';
-  running = false;
+  /** The run under way, which a second request joins. */
+  private current: Promise<PracticeRunResult> | null = null;
   report: GradeReport | null = null;
   /**
    * The fixture and the number of its writes asked to be shown, and the number really shown:
@@ -181,9 +182,20 @@ export class PracticePanel {
     this.editor?.setText(text);
   }
 
-  async run(): Promise<PracticeRunResult> {
-    if (this.running) throw new Error('a run is under way');
-    this.running = true;
+  /**
+   * Runs the code on every fixture. Asked again while a run is under way (Ctrl+Enter pressed twice),
+   * it starts no second run: it answers with the one under way.
+   */
+  run(): Promise<PracticeRunResult> {
+    this.current ??= this.runOnce().finally(() => (this.current = null));
+    return this.current;
+  }
+
+  get running(): boolean {
+    return this.current !== null;
+  }
+
+  private async runOnce(): Promise<PracticeRunResult> {
     this.runButton.disabled = true;
     this.stopReads();
     this.summary.textContent = `Running on ${this.exercise.fixtures.length} fixtures…`;
@@ -219,7 +231,6 @@ export class PracticePanel {
       replace(this.reads);
       return { passed: false, checks: [], writes: [], firstBroken: null, fixtures: [], error: { message: error.message, line: error.line } };
     } finally {
-      this.running = false;
       this.runButton.disabled = false;
     }
   }
