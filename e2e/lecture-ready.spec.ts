@@ -47,7 +47,7 @@ test.describe('the key help', () => {
     [1024, 768],
   ] as const) {
     for (const presentation of [false, true]) {
-      test(`at ${width} × ${height}${presentation ? ' in presentation mode' : ''}, it is drawn over the labels and every key can be reached`, async ({ page }) => {
+      test(`at ${width} × ${height}${presentation ? ' in presentation mode' : ''}, it is drawn over the labels and every key can be reached`, async ({ page }, testInfo) => {
         await page.setViewportSize({ width, height });
         await openApp(page, 'torus.off');
         await page.evaluate(() => window.halfedgeLab.select('h17'));
@@ -63,7 +63,7 @@ test.describe('the key help', () => {
         expect(placement.labels).toBeGreaterThan(0);
         expect(placement).toMatchObject({ onTopAtCentre: true, labelsOnTop: 0, lastText: expect.stringContaining('this help'), lastInList: true, lastOnScreen: true, lastUncovered: true });
         await expect(page.getByRole('button', { name: 'Close the key help' })).toBeInViewport({ ratio: 1 });
-        await page.screenshot({ path: `/tmp/lecture-help-${width}x${height}${presentation ? '-presentation' : ''}.png` });
+        await page.screenshot({ path: testInfo.outputPath('help.png') });
         await page.keyboard.press('Escape');
         await expect(page.getByRole('dialog', { name: 'Keys' })).toBeHidden();
       });
@@ -83,7 +83,7 @@ test('after a file is opened from the picker, the keys work at once', async ({ p
   expect(appErrors(page)).toEqual([]);
 });
 
-test('the glTF export says, before saving, how many polygons become how many triangles', async ({ page }) => {
+test('the glTF export says, before saving, how many polygons become how many triangles', async ({ page }, testInfo) => {
   for (const [width, height] of [
     [1280, 720],
     [1024, 768],
@@ -99,7 +99,7 @@ test('the glTF export says, before saving, how many polygons become how many tri
       await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', String(presentation));
       await note.scrollIntoViewIfNeeded();
       await expect(note).toBeInViewport({ ratio: 1 });
-      await page.screenshot({ path: `/tmp/lecture-gltf-${width}x${height}${presentation ? '-presentation' : ''}.png` });
+      await page.screenshot({ path: testInfo.outputPath(`gltf-${width}x${height}${presentation ? '-presentation' : ''}.png`) });
     }
   }
   // a mesh of triangles only: nothing to say
