@@ -63,9 +63,10 @@ describe('grade on the command line', () => {
   it('stops code that allocates without bound at the memory limit', async () => {
     const { status, stdout } = await grade('vertex-degree', wrong('allocates'));
     expect(status).toBe(1);
-    // the sandbox's count of its arrays, or the worker thread's own limit, whichever comes first
-    expect(stdout).toMatch(/used more than 256 MB of memory/);
-    expect(stdout).not.toContain('loop whose condition never changes');
+    // the sandbox's count of its arrays, or the worker thread's own limit, whichever comes first,
+    // stops the first fixture; on a busy machine a later one may reach the clock before 256 MB
+    const firstStop = stdout.split('\n').find((line) => line.trim().startsWith('stopped:'));
+    expect(firstStop).toMatch(/used more than 256 MB of memory/);
   });
 
   it('tells code that reaches for the page or the network the line it did so', async () => {
