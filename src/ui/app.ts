@@ -444,7 +444,9 @@ export class App {
   boundaryLoops(): BoundaryLoop[] {
     const snapshot = this.snapshot;
     if (!snapshot) return [];
-    if (this.loops?.snapshot !== snapshot) this.loops = { snapshot, loops: boundaryLoopList(snapshot.mesh) };
+    // a closed mesh (the boundary-edge count is exact even before a patch's full pass) has none:
+    // no pass over every halfedge on the page's thread after each edit of a large closed mesh
+    if (this.loops?.snapshot !== snapshot) this.loops = { snapshot, loops: snapshot.stats.boundaryEdges === 0 ? [] : boundaryLoopList(snapshot.mesh) };
     return this.loops.loops;
   }
 
