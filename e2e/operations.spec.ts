@@ -243,7 +243,27 @@ test.describe('stepping seen on a projector', () => {
       expect(box.y + box.height).toBeLessThanOrEqual(Math.min(height, view.y + view.height));
       expect(box.x + box.width).toBeLessThanOrEqual(view.x + view.width);
       await page.screenshot({ path: testInfo.outputPath(`stepping-${width}x${height}.png`) });
+      // the last Step ends the operation, and its phase stays: card, colours, diff, and the stepper
+      for (let phase = 2; phase <= 4; phase++) await page.keyboard.press('s');
+      await expect(legend).toContainText('Loop subdivision — phase 4 of 4 (done): move the old vertices');
+      await expect(legend).toContainText('moved');
+      await expect(legend.locator('.legend-phase')).toBeInViewport();
+      expect(await page.evaluate(() => window.halfedgeLab.state().ended)).toEqual({ label: 'Loop subdivision', phases: 4, total: 4 });
+      await expect(page.locator('.stepper-panel .diff')).toContainText(/pointer|No pointer changed/);
+      await page.screenshot({ path: testInfo.outputPath(`last-phase-${width}x${height}.png`) });
+      expect((await stats(page)).faces).toBe(16);
+      // Previous phase: the phase before, its mesh and marks; Step goes forward to the end again
+      await page.keyboard.press('Shift+S');
+      await expect(legend).toContainText('Loop subdivision — phase 3 of 4: place the edge points');
+      expect(await page.evaluate(() => window.halfedgeLab.state().stepping)).toEqual({ label: 'Loop subdivision', phases: 3, total: 4 });
+      await page.keyboard.press('s');
+      await expect(legend).toContainText('phase 4 of 4 (done)');
+      // Undo after the end undoes the whole operation
+      await page.keyboard.press('Control+z');
+      await expect.poll(async () => (await stats(page)).faces).toBe(4);
+      await expect(legend).toContainText('prev');
       // run to the end: the legend explains the pointer colours again
+      await page.locator('[data-operation="loop"]').click();
       await page.keyboard.press('g');
       await expect(legend).toContainText('prev');
       await expect(legend).not.toContainText('rewired');

@@ -182,6 +182,7 @@ export class App {
     });
     this.stepper = new StepperPanel(this.byId('stepper'), {
       step: () => void this.request('step'),
+      stepBack: () => void this.request('stepBack'),
       runToEnd: () => void this.request('runToEnd'),
       cancel: () => void this.request('cancel'),
       select: (s) => this.select(s),
@@ -358,7 +359,7 @@ export class App {
     this.tables.setMesh(mesh, this.inspection.convention, snapshot.idsVersion, snapshot.change);
     this.stepper.update(snapshot);
     // while stepping, the Operate tab puts the stepper's buttons first
-    this.frame.classList.toggle('stepping', snapshot.stepping !== null);
+    this.frame.classList.toggle('stepping', snapshot.stepping !== null || snapshot.ended !== null);
     this.drawLegend();
     // an operation that ended (run through or cancelled) takes the plane away: its square tints
     // the view, and its preview shows where it crossed the mesh before
@@ -759,7 +760,7 @@ export class App {
   /** The marks of the phase being stepped, worked out once per snapshot: the legend and the view both need them. */
   private phaseMarks(): HighlightSpec | null {
     const snapshot = this.snapshot;
-    if (!snapshot?.stepping || !snapshot.phase) return null;
+    if (!(snapshot?.stepping || snapshot?.ended) || !snapshot.phase) return null;
     if (this.marked?.snapshot !== snapshot) this.marked = { snapshot, marks: phaseHighlight(snapshot.mesh, snapshot.phase) };
     return this.marked.marks;
   }

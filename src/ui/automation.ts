@@ -84,7 +84,7 @@ export function automation(app: App) {
     setPresentation: (on: boolean) => app.setPresentation(on),
     /** Selects boundary loop `index`'s halfedge and frames the loop (the HUD's “frame” button); false when there is no such loop. */
     frameBoundaryLoop: (index: number) => app.frameBoundaryLoop(index),
-    /** The student's verbs (protocol.ts): `start(request)`, `step()`, `runToEnd()`, `cancel()`, `edit(request)`, `undo()`, `redo()`, `jump(index)`; each resolves to `{ version }`, or null when refused (the page says why). */
+    /** The student's verbs (protocol.ts): `start(request)`, `step()`, `stepBack()`, `runToEnd()`, `cancel()`, `edit(request)`, `undo()`, `redo()`, `jump(index)`; each resolves to `{ version }`, or null when refused (the page says why). */
     ...(Object.fromEntries(studentVerbNames.map((verb) => [verb, (...args: unknown[]) => (app.request as (verb: StudentVerb, ...args: unknown[]) => Promise<Snapshot | null>)(verb, ...args).then(summary)])) as SnapshotVerbs<
       Promise<{ version: number } | null>,
       StudentVerb
@@ -151,6 +151,8 @@ export function automation(app: App) {
       /** Whether the last snapshot came as a patch of the page's copy (an edit, undo, redo or smoothing step) rather than a whole mesh. */
       patched: (app.snapshot?.renderPatch ?? null) !== null,
       stepping: app.snapshot?.stepping ?? null,
+      /** The operation the last Step ended, while its last phase stays on show (`stepBack()` goes back into it). */
+      ended: app.snapshot?.ended ?? null,
       history: app.snapshot?.history ?? null,
       version: app.snapshot?.version ?? 0,
       frames: app.viewer.frames,

@@ -32,6 +32,7 @@ export const keyBindings: KeyBinding[] = [
     help: 'step the operation / run it to the end / cancel it',
     run: (app, key) => void app.request(key === 's' ? 'step' : key === 'g' ? 'runToEnd' : 'cancel'),
   },
+  { keys: ['shift+s'], help: 'back to the previous phase (also after the last step)', run: (app) => void app.request('stepBack') },
   { keys: ['ctrl+z', 'ctrl+y'], help: 'undo / redo (also ctrl+shift+z)', run: (app, key) => void app.request(key === 'ctrl+z' ? 'undo' : 'redo') },
   { keys: ['ctrl+shift+z'], help: '', run: (app) => void app.request('redo') },
   {
@@ -46,11 +47,13 @@ export const keyBindings: KeyBinding[] = [
   { keys: ['?'], help: 'this help', run: (app) => app.toggleHelp() },
 ];
 
-/** `ctrl+shift+z`, `n`, `?`, `backspace`: the name a binding lists a key press under. */
+/** `ctrl+shift+z`, `shift+s`, `n`, `?`, `backspace`: the name a binding lists a key press under. */
 export function keyName(event: KeyboardEvent): string {
   const key = event.key.toLowerCase();
-  const modifiers = event.ctrlKey || event.metaKey ? (event.shiftKey ? 'ctrl+shift+' : 'ctrl+') : '';
-  return `${modifiers}${key}`;
+  // Shift names itself only with a letter: `?` is Shift+/ on most keyboards and lists as `?`
+  const shift = event.shiftKey ? (event.ctrlKey || event.metaKey ? 'shift+' : /^[a-z]$/.test(key) ? 'shift+' : '') : '';
+  const modifiers = event.ctrlKey || event.metaKey ? 'ctrl+' : '';
+  return `${modifiers}${shift}${key}`;
 }
 
 /** Runs the binding of a key press; false when no binding has that key. */

@@ -176,13 +176,18 @@ export interface Snapshot {
   /** The build report of the file this mesh came from (until the first edit). */
   report: BuildReport | null;
   file: FileInfo | null;
-  /** The phase that produced this mesh, when stepping. */
+  /** The phase that produced this mesh (while stepping, and after an operation in the history). */
   phase: Phase | null;
   /** Pointers changed by the last phase or edit. */
   diff: PointerDiff | null;
   /** While stepping, the colours of the per-vertex values the phase reports (null: none, draw the surface plain). */
   colours: ColourScale | null;
   stepping: SteppingState | null;
+  /**
+   * The operation the last Step finished, while its last phase stays on show (`phase`, `diff`,
+   * `colours`: until the mesh changes again); `stepBack` goes back into it.
+   */
+  ended: SteppingState | null;
   history: { items: HistoryItem[]; index: number };
 }
 
@@ -223,6 +228,8 @@ const takes = <A extends unknown[]>(): Arguments<A> => ({});
 export const studentVerbs = {
   start: takes<[request: OperationRequest]>(),
   step: takes<[]>(),
+  /** Back one phase (after the last Step, back into the operation that Step ended). */
+  stepBack: takes<[]>(),
   runToEnd: takes<[]>(),
   cancel: takes<[]>(),
   edit: takes<[request: EditRequest]>(),

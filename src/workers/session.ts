@@ -17,6 +17,7 @@ import {
   deserializeMesh,
   type HalfedgeMesh,
   invertChange,
+  type MeshPointers,
   meshFingerprint,
   type Operation,
   type Phase,
@@ -36,7 +37,7 @@ import { type WriteFormat, writeMeshAsync } from '../core/io/index.js';
 import { type ColourScale, colourScale } from './colour-scale.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
 import { EDIT_ROOM, History } from './history.js';
-import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails, SnapshotVerbs } from './protocol.js';
+import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails, SnapshotVerbs, SteppingState } from './protocol.js';
 import { RenderLayout } from './render.js';
 import { fullDetails, movedDetails, patchedDetails } from './snapshot.js';
 
@@ -71,6 +72,11 @@ const DIFF_LIMIT = 1000;
 export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot>> {
   private readonly history = new History<EntryInfo>();
   private stepping: Stepping | null = null;
+  /**
+   * The operation the last `step` finished: its last phase stays on show (card, colours, diff) and
+   * can be stepped back into, until the mesh changes again.
+   */
+  private ended: Stepping | null = null;
   private cancelRequested = false;
   private version = 0;
   /** Counts every change of the mesh on screen; a patch applies to the state it was made from. */
@@ -135,12 +141,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
       const levels = this.history.items().slice(0, this.history.position + 1).filter((entry) => entry.label === label).length;
       request = { ...request, level: levels };
     }
-    const inPlace = request.kind === 'smooth';
-    const working = inPlace ? current : current.clone();
-    // throws (leaving the session as it was) when the operation does not apply
-    const { operation, phases } = startOperation(working, request);
-    const startPositions = inPlace ? positionsOf(current) : null;
-    this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null };
+    const { working } = this.begin(request); // throws (leaving the session as it was) when the operation does not apply
     // a subdivision compacts its copy first: the page then needs the renumbered mesh whole
     if (working.vertexSlots !== current.vertexSlots || working.edgeSlots !== current.edgeSlots || working.faceSlots !== current.faceSlots) return this.send(null, -1);
     // else nothing has changed yet (the copy equals the mesh the page holds): an empty patch, not the whole mesh
@@ -150,7 +151,36 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
   /** Runs the next phase; when the operation has no more, its result joins the history. */
   step(): Snapshot {
     const from = this.state;
-    return this.send(this.stepOnce(), from);
+    const stepping = this.stepping;
+    const change = this.stepOnce();
+    if (!this.stepping) this.ended = stepping;
+    return this.send(change, from);
+  }
+
+  /**
+   * Goes back one phase, as far as the operation's start; after the last `step`, back into the
+   * operation (whose result stays in the history, for redo). Operations cannot run backwards, so
+   * the operation runs again from its start to the phase before; the page gets the whole mesh.
+   */
+  stepBack(): Snapshot {
+    const stepping = this.stepping ?? this.ended;
+    if (!stepping) throw new TopologyError('no operation is being stepped: there is no phase to go back to');
+    if (stepping.phases === 0) throw new TopologyError(`${stepping.label} is at its start: there is no phase before it`);
+    if (this.stepping) this.abandonStepping();
+    else {
+      this.ended = null;
+      this.history.moveTo(this.history.position - 1);
+    }
+    this.state++;
+    const again = this.begin(stepping.request);
+    const target = stepping.phases - 1;
+    for (let i = 1; i <= target; i++) {
+      // only the phase shown needs its pointer diff (a copy of every pointer before it)
+      const before = i === target && !again.startPositions ? pointerCopy(again.working) : null;
+      if (!this.advance(again, before)) throw new TopologyError(`${stepping.label} ended after ${i - 1} phases when run again`);
+    }
+    if (again.total !== null && again.phases >= again.total) again.total = null;
+    return this.send(null, -1);
   }
 
   /**
@@ -289,13 +319,42 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
       file: info.file,
       phase: stepping ? stepping.phase : info.phase,
       diff: stepping ? stepping.diff : info.diff,
-      colours: vertexColours(mesh, stepping?.phase ?? null),
-      stepping: stepping ? { label: stepping.label, phases: stepping.phases, total: stepping.total } : null,
+      colours: vertexColours(mesh, (stepping ?? this.ended)?.phase ?? null),
+      stepping: steppingState(stepping),
+      ended: steppingState(this.ended),
       history: {
         items: this.history.items().map(({ label, vertices, faces, info }) => ({ label, vertices, faces, source: info.source })),
         index: this.history.position,
       },
     };
+  }
+
+  /**
+   * Starts stepping `request` on the current mesh (on a copy, or in place when it only moves
+   * vertices). @throws when the operation does not apply, leaving the session as it was.
+   */
+  private begin(request: OperationRequest): Stepping {
+    const current = this.currentMesh();
+    const inPlace = request.kind === 'smooth';
+    const working = inPlace ? current : current.clone();
+    const { operation, phases } = startOperation(working, request);
+    const startPositions = inPlace ? positionsOf(current) : null;
+    this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null };
+    return this.stepping;
+  }
+
+  /**
+   * Runs the operation's next phase, if it has one (false when it has finished instead); `before`:
+   * the pointers before it, to list the phase's pointer changes (null: the phase only moves vertices).
+   */
+  private advance(stepping: Stepping, before: MeshPointers | null): boolean {
+    const next = stepping.operation.next();
+    if (next.done) return false;
+    stepping.phases++;
+    stepping.phase = next.value;
+    // what the phase says it created, rewired and removed: only those elements are compared
+    stepping.diff = before ? phaseDiff(before, stepping.working, next.value, DIFF_LIMIT) : { changes: [], total: 0 };
+    return true;
   }
 
   /** Runs one phase; returns its change record when it has one (an operation that only moves vertices). */
@@ -305,23 +364,13 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const { working } = stepping;
     const positions = stepping.startPositions ? positionsOf(working) : null;
     const before = positions ? null : pointerCopy(working);
-    // what the phase says it created, rewired and removed: only those elements are compared
-    const diffOf = (phase: Phase) => (before ? phaseDiff(before, working, phase, DIFF_LIMIT) : { changes: [], total: 0 });
     const phaseChange = () => (positions ? positionsChange(working, positions) : null);
-    let next = stepping.operation.next();
     this.state++;
-    if (!next.done) {
-      stepping.phases++;
-      stepping.phase = next.value;
-      stepping.diff = diffOf(next.value);
+    if (this.advance(stepping, before)) {
       if (stepping.total === null || stepping.phases < stepping.total) return phaseChange();
-      // that was the last announced phase: let the operation finish now, so no empty step follows
-      next = stepping.operation.next();
-      if (!next.done) {
-        // it had more to do than it announced: show that phase as well, and stop predicting
-        stepping.phases++;
-        stepping.phase = next.value;
-        stepping.diff = diffOf(next.value);
+      // that was the last announced phase: let the operation finish now, so no empty step follows;
+      // one that had more to do than it announced shows that phase as well, and stops predicting
+      if (this.advance(stepping, before)) {
         stepping.total = null;
         return phaseChange();
       }
@@ -345,6 +394,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
    * change that makes (for the page), else null.
    */
   private abandonStepping(): ChangeRecord | null {
+    this.ended = null;
     const stepping = this.stepping;
     if (!stepping) return null;
     this.stepping = null;
@@ -365,6 +415,10 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     if (!mesh) throw new TopologyError('no mesh is open yet');
     return mesh;
   }
+}
+
+function steppingState(stepping: Stepping | null): SteppingState | null {
+  return stepping ? { label: stepping.label, phases: stepping.phases, total: stepping.total } : null;
 }
 
 /** The colours of a phase's per-vertex values (one per vertex slot), if it reports them. */

@@ -18,6 +18,7 @@ export interface PageSession {
   snapshot(): PageSnapshot;
   start(...args: Parameters<EditingSession['start']>): PageSnapshot;
   step(): PageSnapshot;
+  stepBack(): PageSnapshot;
   runToEnd(): Promise<PageSnapshot>;
   cancel(): PageSnapshot;
   edit(...args: Parameters<EditingSession['edit']>): PageSnapshot;
@@ -44,6 +45,7 @@ export function pageSession(session: EditingSession): PageSession {
     snapshot: () => take(session.snapshot()),
     start: (request) => take(session.start(request)),
     step: () => take(session.step()),
+    stepBack: () => take(session.stepBack()),
     runToEnd: async () => take(await session.runToEnd()),
     cancel: () => take(session.cancel()),
     edit: (request) => take(session.edit(request)),

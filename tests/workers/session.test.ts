@@ -93,6 +93,65 @@ describe('EditingSession', () => {
     expect(new Set(names).size).toBe(4);
   });
 
+  it('keeps the last phase on show after the final Step, and steps back phase by phase to the start', async () => {
+    const session = await sessionWith(writeSoup(torus(6, 4), 'off'), 't.off');
+    const { total } = session.start({ kind: 'subdivide', scheme: 'catmull-clark' }).stepping!;
+    expect(total).toBeGreaterThanOrEqual(3);
+    // each phase as stepping forward shows it: its name, diff and mesh
+    const forward: { name: string; diff: unknown; contents: unknown }[] = [];
+    for (let i = 0; i < total!; i++) {
+      const shown = session.step();
+      forward.push({ name: shown.phase!.name, diff: shown.diff, contents: meshContents(shown.mesh) });
+    }
+    let snapshot = session.snapshot();
+    // the operation is in the history, and its last phase stays: name, diff, the one who ended it
+    expect(snapshot.stepping).toBeNull();
+    expect(snapshot.ended).toEqual({ label: 'Catmull-Clark subdivision', phases: total, total });
+    expect(snapshot.phase?.name).toBe(forward[total! - 1].name);
+    expect(snapshot.diff).toEqual(forward[total! - 1].diff);
+    expect(forward.some((phase) => (phase.diff as { total: number }).total > 0)).toBe(true);
+    expect(snapshot.history.index).toBe(1);
+    // back into the operation: phase 3, its mesh and diff as they were going forward
+    for (let phases = total! - 1; phases >= 1; phases--) {
+      snapshot = session.stepBack();
+      expect(snapshot.problems).toEqual([]);
+      expect(snapshot.ended).toBeNull();
+      expect(snapshot.stepping).toEqual({ label: 'Catmull-Clark subdivision', phases, total });
+      expect(snapshot.phase?.name).toBe(forward[phases - 1].name);
+      expect(snapshot.diff).toEqual(forward[phases - 1].diff);
+      expect(meshContents(snapshot.mesh)).toEqual(forward[phases - 1].contents);
+    }
+    // the start: the mesh before the operation, and no phase before it
+    snapshot = session.stepBack();
+    expect(snapshot.stepping?.phases).toBe(0);
+    expect(snapshot.stats.faces).toBe(6 * 4);
+    expect(() => session.stepBack()).toThrow(/at its start/);
+    // forward again to the end: the same mesh, one history entry for it
+    for (let i = 0; i < total!; i++) snapshot = session.step();
+    expect(meshContents(snapshot.mesh)).toEqual(forward[total! - 1].contents);
+    expect(snapshot.history.items.map((item) => item.label)).toEqual(['open t.off', 'Catmull-Clark subdivision']);
+    // undo after the end undoes the whole operation, and leaves the last phase
+    snapshot = session.undo();
+    expect(snapshot.ended).toBeNull();
+    expect(snapshot.stats.faces).toBe(6 * 4);
+    expect(() => session.stepBack()).toThrow(/no operation/);
+  });
+
+  it('steps a smoothing back in place, and Run to end does not keep a last phase', async () => {
+    const session = await sessionWith(writeSoup(uvSphere(12, 16), 'ply-binary'), 'sphere.ply');
+    const start = Array.from(session.snapshot().mesh.positions);
+    session.start({ kind: 'smooth', options: { method: 'taubin', iterations: 1 } });
+    const first = Array.from(session.step().mesh.positions);
+    session.step();
+    expect(session.snapshot().ended?.phases).toBe(2);
+    expect(Array.from(session.stepBack().mesh.positions)).toEqual(first);
+    expect(Array.from(session.stepBack().mesh.positions)).toEqual(start);
+    const run = await session.runToEnd();
+    expect(run.ended).toBeNull();
+    expect(run.stepping).toBeNull();
+    expect(Array.from(session.undo().mesh.positions)).toEqual(start);
+  });
+
   it('gives the same mesh stepping as the library straight through', async () => {
     const session = await sessionWith(writeSoup(torus(6, 4), 'off'), 't.off');
     session.start({ kind: 'subdivide', scheme: 'catmull-clark' });

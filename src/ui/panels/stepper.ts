@@ -12,6 +12,7 @@ import { setAvailability, whenAvailable } from './operations.js';
 
 export interface StepperActions {
   step(): void;
+  stepBack(): void;
   runToEnd(): void;
   cancel(): void;
   select(s: Selection): void;
@@ -19,15 +20,17 @@ export interface StepperActions {
 
 /**
  * "Loop subdivision — phase 2 of 4: split every edge" while an operation is being stepped (or
- * "…: ready — press Step" before its first phase); null when none is. The stepper and the view's
- * legend both say it.
+ * "…: ready — press Step" before its first phase), "…phase 4 of 4 (done): …" while the last phase
+ * of one the last Step ended stays on show; null otherwise. The stepper and the view's legend both
+ * say it.
  */
 export function steppingTitle(snapshot: Snapshot): string | null {
-  const { stepping, phase } = snapshot;
+  const { phase } = snapshot;
+  const stepping = snapshot.stepping ?? snapshot.ended;
   if (!stepping) return null;
   if (stepping.phases === 0) return `${stepping.label}: ready — press Step`;
   const of = stepping.total ? ` of ${stepping.total}` : '';
-  return `${stepping.label} — phase ${stepping.phases}${of}: ${phase?.name ?? ''}`;
+  return `${stepping.label} — phase ${stepping.phases}${of}${snapshot.ended ? ' (done)' : ''}: ${phase?.name ?? ''}`;
 }
 
 /** Rows of the pointer diff shown (the count says how many there were). */
@@ -38,11 +41,13 @@ export class StepperPanel {
   private readonly explanation = el('p', { class: 'phase-explanation' });
   private readonly diff = el('div', { class: 'diff' });
   private readonly stepButton: HTMLButtonElement;
+  private readonly backButton: HTMLButtonElement;
   private readonly runButton: HTMLButtonElement;
   private readonly cancelButton: HTMLButtonElement;
 
   constructor(container: HTMLElement, private readonly actions: StepperActions) {
     this.stepButton = el('button', { type: 'button', 'aria-keyshortcuts': 'S', onclick: whenAvailable(() => actions.step()) }, 'Step');
+    this.backButton = el('button', { type: 'button', 'aria-keyshortcuts': 'Shift+S', onclick: whenAvailable(() => actions.stepBack()) }, 'Previous phase');
     this.runButton = el('button', { type: 'button', 'aria-keyshortcuts': 'G', onclick: whenAvailable(() => actions.runToEnd()) }, 'Run to end');
     this.cancelButton = el('button', { type: 'button', 'aria-keyshortcuts': 'X', onclick: whenAvailable(() => actions.cancel()) }, 'Cancel operation');
     const key = (name: keyof typeof phaseColors) =>
@@ -51,20 +56,28 @@ export class StepperPanel {
       container,
       this.title,
       this.explanation,
-      el('div', { class: 'button-row' }, this.stepButton, this.runButton, this.cancelButton),
+      el('div', { class: 'button-row' }, this.stepButton, this.backButton, this.runButton, this.cancelButton),
       el('div', { class: 'phase-legend' }, key('created'), key('moved'), key('rewired')),
       this.diff,
     );
   }
 
   update(snapshot: Snapshot): void {
-    const { stepping, phase } = snapshot;
-    const idle = stepping === null;
-    const noOperation = 'start an operation first (Operations, above)';
-    setAvailability(this.stepButton, 'Step one phase (S)', idle ? noOperation : null);
-    setAvailability(this.runButton, 'Run to end (G)', idle ? noOperation : null);
-    setAvailability(this.cancelButton, 'Cancel the operation (X)', idle ? noOperation : null);
-    if (stepping) {
+    const { stepping, ended, phase } = snapshot;
+    const notRunning = ended
+      ? `${ended.label} has ended: Previous phase (Shift+S) goes back into it, Undo (Ctrl+Z) takes it back`
+      : stepping
+        ? null
+        : 'start an operation first (Operations, above)';
+    setAvailability(this.stepButton, 'Step one phase (S)', notRunning);
+    setAvailability(
+      this.backButton,
+      'Back to the previous phase (Shift+S)',
+      stepping?.phases === 0 ? 'the operation is at its start: there is no phase before' : stepping || ended ? null : notRunning,
+    );
+    setAvailability(this.runButton, 'Run to end (G)', notRunning);
+    setAvailability(this.cancelButton, 'Cancel the operation (X)', notRunning);
+    if (stepping || ended) {
       this.title.textContent = steppingTitle(snapshot)!;
     } else {
       const last = snapshot.history.items[snapshot.history.index];
