@@ -48,6 +48,9 @@ const MAX_ID_LABELS = 400;
 /** How long the changes must pause before the full counts and checks are asked for. */
 const DETAILS_AFTER_MS = 400;
 
+/** Walk steps the breadcrumb shows in presentation mode: its large type keeps them on a few lines of the panel. */
+const PRESENTATION_BREADCRUMB_STEPS = 3;
+
 /** Where an app lives: the whole page, or the shadow root of a `<halfedge-view>` element. */
 export interface AppHost {
   /** Holds the markup of layout.html, in which ids are looked up. */
@@ -358,6 +361,7 @@ export class App {
     }
     this.tables.setMesh(mesh, this.inspection.convention, snapshot.idsVersion, snapshot.change);
     this.stepper.update(snapshot);
+    if (snapshot.stepping || snapshot.ended) revealInPanel(this.stepper.firstChanges());
     // while stepping, the Operate tab puts the stepper's buttons first
     this.frame.classList.toggle('stepping', snapshot.stepping !== null || snapshot.ended !== null);
     this.drawLegend();
@@ -490,6 +494,7 @@ export class App {
     this.showTables(!on);
     void this.detail.refresh();
     this.drawSelection();
+    this.drawPanels();
     // the view changed size with the layout: fit the mesh to it once the layout has settled
     requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
     // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
@@ -684,8 +689,14 @@ export class App {
       return false;
     }
     const nowhere = this.inspection.walk(this.mesh, move);
-    this.byId('walk-message').textContent = nowhere ?? '';
-    if (nowhere) return false;
+    const message = this.byId('walk-message');
+    message.textContent = nowhere ?? '';
+    if (nowhere) {
+      // said on the view as well, where a room looking at the mesh reads it
+      this.say(nowhere);
+      revealInPanel(message);
+      return false;
+    }
     if (this.inspection.marks.quiz) this.quiz.end();
     this.afterSelect();
     return true;
@@ -746,6 +757,7 @@ export class App {
     this.drawSelection();
     this.drawPanels();
     this.tables.reveal(this.inspection.selection);
+    revealInPanel(this.byId('breadcrumb'));
   }
 
   /** The legend: while stepping, the phase and what its colours mean; else the pointers' colours. */
@@ -782,7 +794,7 @@ export class App {
     // a pointer in the record is a step of the walk (Back returns); anything else starts a new one
     const follow = (field: string, s: Selection) => void (isMove(field) ? this.walk(field) : this.select(s));
     renderInspector(this.byId('record'), this.byId('convention-note'), this.mesh, this.inspection.selection, this.inspection.convention, follow);
-    renderBreadcrumb(this.byId('breadcrumb'), this.inspection.path);
+    renderBreadcrumb(this.byId('breadcrumb'), this.inspection.path, this.scale > 1 ? PRESENTATION_BREADCRUMB_STEPS : undefined);
     if (this.mesh && snapshot) this.operations.update(this.mesh, this.inspection.selection, snapshot.unavailable);
     if (snapshot) {
       renderHud(this.byId('hud'), snapshot.stats, snapshot.problems, this.boundaryLoops(), {
@@ -847,4 +859,19 @@ export class App {
     }
     this.drawSelection();
   }
+}
+
+/**
+ * Scrolls the side panel just enough for `element` to be in sight below its sticky tabs (the page
+ * and the view stay where they are, as `scrollIntoView` would not leave them); nothing when the
+ * element is not shown (another tab is open).
+ */
+function revealInPanel(element: Element): void {
+  const side = element.closest<HTMLElement>('.side');
+  if (!side || element.getClientRects().length === 0) return;
+  const box = element.getBoundingClientRect();
+  const panel = side.getBoundingClientRect();
+  const top = panel.top + (side.querySelector('.side-tabs')?.getBoundingClientRect().height ?? 0);
+  if (box.bottom > panel.bottom) side.scrollTop += Math.min(box.bottom - panel.bottom, box.top - top);
+  else if (box.top < top) side.scrollTop -= top - box.top;
 }

@@ -112,10 +112,11 @@ export interface WalkStep {
 /** Steps the breadcrumb shows; a longer walk shows its start, how many steps it leaves out, and its last ones. */
 export const MAX_BREADCRUMB_STEPS = 8;
 
-export function breadcrumbText(path: WalkStep[]): string {
+/** `h17 → next → h18 → twin → h40`, at most `maxSteps` of it (a single step is never left out: it says itself as briefly). */
+export function breadcrumbText(path: WalkStep[], maxSteps = MAX_BREADCRUMB_STEPS): string {
   const text = (step: WalkStep) => (step.move ? `${step.move} → ${elementName(step.to)}` : elementName(step.to));
-  if (path.length <= MAX_BREADCRUMB_STEPS) return path.map(text).join(' → ');
-  const tail = path.slice(-(MAX_BREADCRUMB_STEPS - 1));
+  if (path.length <= maxSteps + 1) return path.map(text).join(' → ');
+  const tail = path.slice(-(maxSteps - 1));
   return [text(path[0]), `… ${path.length - 1 - tail.length} steps …`, ...tail.map(text)].join(' → ');
 }
 

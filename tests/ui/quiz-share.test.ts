@@ -139,6 +139,17 @@ describe('the breadcrumb', () => {
     // the start, the gap, and the last MAX − 1 steps
     expect(text.split(' → ')).toHaveLength(2 + 2 * (MAX_BREADCRUMB_STEPS - 1));
     expect(text.endsWith(elementName(path[path.length - 1]!.to))).toBe(true);
+    // presentation mode's shorter form: the start, the gap and the last three steps
+    expect(breadcrumbText(path, 4).split(' → ')).toHaveLength(2 + 2 * 3);
+  });
+
+  it('never leaves out a single step: it would take as much room as saying it', () => {
+    const { mesh } = buildMesh(torus(6, 5));
+    const path: WalkStep[] = [{ move: null, to: { kind: 'halfedge', id: 0 } }];
+    for (let i = 0; i < MAX_BREADCRUMB_STEPS; i++) path.push({ move: 'next', to: walk(mesh, path[path.length - 1]!.to, 'next') as Selection });
+    expect(breadcrumbText(path)).not.toContain('…');
+    path.push({ move: 'twin', to: walk(mesh, path[path.length - 1]!.to, 'twin') as Selection });
+    expect(breadcrumbText(path)).toContain('… 2 steps …');
   });
 
   it('follows only the record fields that are pointers', () => {

@@ -39,7 +39,7 @@ const MAX_DIFF_ROWS = 300;
 export class StepperPanel {
   private readonly title = el('p', { class: 'phase-title', 'aria-live': 'polite' });
   private readonly explanation = el('p', { class: 'phase-explanation' });
-  private readonly diff = el('div', { class: 'diff' });
+  private readonly diff = el('div', { class: 'diff scroll-box' });
   private readonly stepButton: HTMLButtonElement;
   private readonly backButton: HTMLButtonElement;
   private readonly runButton: HTMLButtonElement;
@@ -85,6 +85,11 @@ export class StepperPanel {
     }
     this.explanation.textContent = phase?.explanation ?? '';
     this.renderDiff(snapshot);
+  }
+
+  /** What a phase changed, as far as its first few pointers: what the panel keeps in sight. */
+  firstChanges(): Element {
+    return this.diff.querySelector(`tbody tr:nth-child(${Math.min(3, this.diff.querySelectorAll('tbody tr').length)})`) ?? this.diff;
   }
 
   private renderDiff(snapshot: Snapshot): void {

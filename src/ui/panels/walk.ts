@@ -35,6 +35,7 @@ export function renderWalkButtons(container: HTMLElement, go: (move: Move) => vo
   );
 }
 
-export function renderBreadcrumb(container: HTMLElement, path: WalkStep[]): void {
-  container.textContent = path.length ? breadcrumbText(path) : '—';
+/** The breadcrumb; `maxSteps`: fewer in presentation mode, where its large type must fit the panel. */
+export function renderBreadcrumb(container: HTMLElement, path: WalkStep[], maxSteps?: number): void {
+  container.textContent = path.length ? breadcrumbText(path, maxSteps) : '—';
 }
