@@ -193,3 +193,34 @@ test('?embed with a model that is not there says so on the view, beside a panel 
   await expect(frame.locator('#status')).toBeVisible();
   await expect(frame.locator('#status')).toHaveAttribute('role', 'alert');
 });
+
+test('a 600 × 460 ?embed with the legend and the counts keeps them compact and frames the torus in the rest', async ({ page }, testInfo) => {
+  await serveCoursePage(page, `<!doctype html><title>Slide</title><iframe title="Halfedge Lab" width="600" height="460" style="border:0" src="/?embed&panels=legend,hud&model=torus.off&select=h17"></iframe>`);
+  await page.goto('/course/index.html');
+  const frame = page.frameLocator('iframe');
+  const lab = page.frames().find((f) => f.url().includes('embed'))!;
+  await lab.waitForFunction(() => window.halfedgeLab !== undefined);
+  await lab.evaluate(() => window.halfedgeLab.ready);
+  await expect.poll(() => lab.evaluate(() => window.halfedgeLab.state().selection)).toBe('h17');
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: testInfo.outputPath('embed-600x460.png') });
+  const view = (await frame.locator('#viewport').boundingBox())!;
+  const legend = (await frame.locator('#legend').boundingBox())!;
+  const hud = (await frame.locator('#hud').boundingBox())!;
+  // the short forms, on compact lines: together the two cover well under a third of the view
+  await expect(frame.locator('#hud')).toContainText('✓ valid');
+  expect((legend.width * legend.height + hud.width * hud.height) / (view.width * view.height)).toBeLessThan(0.2);
+  // every vertex in the view, below the overlays, and the torus centred across the view
+  const points = await lab.evaluate(() => {
+    const { vertices } = window.halfedgeLab.state().stats!;
+    return Array.from({ length: vertices }, (_, v) => window.halfedgeLab.screenPosition(`v${v}`));
+  });
+  const xs = points.map((p) => p.x);
+  const ys = points.map((p) => p.y);
+  expect(Math.min(...xs)).toBeGreaterThanOrEqual(0);
+  expect(Math.max(...xs)).toBeLessThanOrEqual(view.width);
+  expect(Math.max(...ys)).toBeLessThanOrEqual(view.height);
+  expect(Math.min(...ys)).toBeGreaterThan(Math.max(legend.y + legend.height, hud.y + hud.height) - view.y - 4);
+  const centre = (Math.min(...xs) + Math.max(...xs)) / 2;
+  expect(Math.abs(centre - view.width / 2)).toBeLessThan(0.08 * view.width);
+});
