@@ -198,7 +198,7 @@ export class App {
       mesh: () => this.mesh,
       convention: () => this.inspection.convention,
       showPath: (question, picked) => {
-        this.inspection.marks.quiz = question && this.mesh ? quizHighlight(this.mesh, question.path, picked, picked !== null && isRight(question, picked)) : null;
+        this.inspection.marks.quiz = question ? quizHighlight(question.path, picked, picked !== null && isRight(question, picked)) : null;
         this.drawSelection();
       },
     });
