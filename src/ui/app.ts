@@ -460,12 +460,13 @@ export class App {
       this.say(`No exploded view: ${why ?? ONE_PART}.`);
       return false;
     }
+    // said first: framing keeps the mesh clear of the status line as it will read
+    this.say(on ? 'Exploded view: the parts are drawn pulled apart; the mesh itself has not moved. B puts them back.' : 'The parts are drawn where they are again.');
     this.hover(this.inspection.hovered);
     this.drawSelection();
     this.drawPanels();
     this.frameMesh();
     void this.detail.refresh();
-    this.say(on ? 'Exploded view: the parts are drawn pulled apart; the mesh itself has not moved. B puts them back.' : 'The parts are drawn where they are again.');
     return this.exploded;
   }
 
