@@ -1,10 +1,18 @@
 import { readFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
-import { torus, writeSoup } from '../src/index.js';
-import { openApp } from './helpers.js';
+import { cube, mergeSoups, torus, writeSoup } from '../src/index.js';
+import { clickCanvas, openApp } from './helpers.js';
 
 const stats = (page: Page) => page.evaluate(() => window.halfedgeLab.state().stats!);
 const valid = (page: Page) => page.locator('#hud [data-valid]').getAttribute('data-valid');
+/** Where the page draws each element, on the canvas. */
+const drawnAt = (page: Page, names: string[]) => page.evaluate((names) => names.map((name) => window.halfedgeLab.screenPosition(name)), names);
+type Point = { x: number; y: number };
+const distance = (p: Point, q: Point) => Math.hypot(p.x - q.x, p.y - q.y);
+/** The pairs of points drawn on the same spot, as their indices. */
+const samePlace = (points: Point[]) => points.flatMap((p, i) => points.flatMap((q, j) => (j > i && distance(p, q) < 0.01 ? [[i, j] as const] : [])));
+/** How far apart the two points of each pair are drawn. */
+const gaps = (points: Point[], pairs: ReadonlyArray<readonly [number, number]>) => pairs.map(([i, j]) => distance(points[i]!, points[j]!));
 
 test.describe('stepping operations, history and export', () => {
   test('opens a valid file through the file input, then refuses a broken one keeping the first', async ({ page }) => {
@@ -114,6 +122,129 @@ test.describe('stepping operations, history and export', () => {
     expect(after.components).toBe(2);
     expect(after.closed).toBe(true);
     expect(after.genus).toBe(0);
+  });
+
+  test('pulls the two capped sides of a cut torus apart in the view, leaving the mesh as it is', async ({ page }, testInfo) => {
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await openApp(page, 'torus.off');
+    const explode = page.locator('#explode');
+    const lab = <T,>(run: () => T | Promise<T>) => page.evaluate(run);
+    // one part: nothing to pull apart, and the button says so
+    await expect(explode).toHaveAttribute('aria-disabled', 'true');
+    await expect(explode).toHaveAccessibleName('Explode parts (not available: the mesh is one connected part: there is nothing to pull apart)');
+
+    // the plane y = −0.05, both sides kept and capped (the panel's defaults), stepped to the end
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    for (const [coefficient, value] of [['a', '0'], ['b', '1'], ['c', '0'], ['d', '0.05']]) {
+      await page.getByRole('spinbutton', { name: `Plane coefficient ${coefficient}` }).fill(value);
+    }
+    await page.locator('[data-operation="cut"]').click();
+    for (let phase = 1; phase <= 6; phase++) await page.getByRole('button', { name: 'Step one phase (S)' }).click();
+    await expect(page.locator('.phase-title')).toContainText('done');
+    // the status line says how to see the caps, which lie face to face
+    await expect(page.locator('#status')).toContainText('press B to see them pulled apart');
+    // the cap faces: those the last phase made
+    const caps = await lab(() => window.halfedgeLab.state().phase!.diff!.changes.filter((c) => c.field === 'fHalfedge' && c.old === -1).map((c) => c.index));
+    expect(caps.length).toBeGreaterThanOrEqual(4);
+    const corners = await page.evaluate((faces) => {
+      const { record } = window.halfedgeLab;
+      const corners = new Set<string>();
+      for (const f of faces) {
+        const start = record(`f${f}`).halfedge!;
+        let h = start;
+        do {
+          corners.add(record(h).origin!);
+          h = record(h).next!;
+        } while (h !== start);
+      }
+      return [...corners];
+    }, caps);
+    // each side has its own copy of every corner of the cut, drawn on the other side's
+    const twins = samePlace(await drawnAt(page, corners));
+    expect(twins.flat().sort((a, b) => a - b)).toEqual(corners.map((_, i) => i));
+    const before = await lab(async () => ({ stats: window.halfedgeLab.state().stats, fingerprints: await window.halfedgeLab.fingerprints() }));
+    expect(before.fingerprints.page).toBe(before.fingerprints.session);
+
+    await expect(explode).toHaveAccessibleName('Explode parts');
+    await explode.click();
+    await expect(explode).toHaveAttribute('aria-pressed', 'true');
+    expect(await lab(() => window.halfedgeLab.state().exploded)).toBe(true);
+    await expect(page.locator('#status')).toContainText('the mesh itself has not moved');
+    // the copies of each corner now stand well apart on screen…
+    const { height } = (await page.locator('#viewport canvas').boundingBox())!;
+    for (const gap of gaps(await drawnAt(page, corners), twins)) expect(gap).toBeGreaterThan(0.05 * height);
+    // …and the mesh has not moved: the same counts, and the session and the page hold the same arrays
+    const after = await lab(async () => ({ stats: window.halfedgeLab.state().stats, fingerprints: await window.halfedgeLab.fingerprints() }));
+    expect(after).toEqual(before);
+
+    // a click where a cap is drawn picks it, and its arrows pick their halfedges
+    const seen = await page.evaluate(async (faces) => {
+      const lab = window.halfedgeLab;
+      const picked: number[] = [];
+      for (const f of faces) {
+        const { x, y } = lab.screenPosition(`f${f}`);
+        if ((await lab.pickAt(x, y, 'face')) === `f${f}`) picked.push(f);
+      }
+      return picked;
+    }, caps);
+    // the camera looks from above: the caps of the side below face it, two of the four
+    expect(seen.length).toBeGreaterThanOrEqual(2);
+    const cap = seen[0]!;
+    const { x, y } = await page.evaluate((f) => window.halfedgeLab.screenPosition(`f${f}`), cap);
+    await page.getByRole('combobox', { name: 'What a click picks' }).selectOption('face');
+    await clickCanvas(page, x, y);
+    expect(await lab(() => window.halfedgeLab.state().selection)).toBe(`f${cap}`);
+    const arrow = await lab(() => window.halfedgeLab.record(window.halfedgeLab.state().selection!).halfedge!);
+    const at = await page.evaluate((h) => window.halfedgeLab.screenPosition(h), arrow);
+    expect(await page.evaluate(({ x, y }) => window.halfedgeLab.pickAt(x, y, 'halfedge'), at)).toBe(arrow);
+    await page.screenshot({ path: testInfo.outputPath('exploded-cut-1280x720.png') });
+    await page.setViewportSize({ width: 1024, height: 768 });
+    await page.keyboard.press('Home');
+    await page.screenshot({ path: testInfo.outputPath('exploded-cut-1024x768.png') });
+    // close up, the arrows of the selected cap lie on it where it is drawn
+    await page.keyboard.press('z');
+    await page.screenshot({ path: testInfo.outputPath('exploded-cap-close-up.png') });
+
+    // B puts the parts back where they are
+    await page.keyboard.press('b');
+    expect(await lab(() => window.halfedgeLab.state().exploded)).toBe(false);
+    await expect(explode).toHaveAttribute('aria-pressed', 'false');
+    for (const gap of gaps(await drawnAt(page, corners), twins)) expect(gap).toBeLessThan(0.01);
+    // on again, then undo the cut: one part, so the view is not exploded and the button says why
+    expect(await lab(() => window.halfedgeLab.explode(true))).toBe(true);
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => lab(() => window.halfedgeLab.state().exploded)).toBe(false);
+    await expect(explode).toHaveAttribute('aria-disabled', 'true');
+    expect(await lab(() => window.halfedgeLab.explode(true))).toBe(false);
+    await expect(page.locator('#status')).toHaveText('No exploded view: the mesh is one connected part: there is nothing to pull apart.');
+  });
+
+  test('pulls the parts of a model of several apart from its centre, until another model opens', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    // two unit cubes side by side, touching along x = 1
+    const cubes = mergeSoups([cube(), cube()]);
+    for (let i = 3 * 8; i < cubes.positions.length; i += 3) cubes.positions[i]! += 1;
+    expect(await page.evaluate((bytes) => window.halfedgeLab.open(bytes, 'two-cubes.obj'), [...writeSoup(cubes, 'obj')])).toBe(true);
+    const vertices = Array.from({ length: 16 }, (_, v) => `v${v}`);
+    // the four corners of each cube on the face they share, drawn on the other cube's
+    const twins = samePlace(await drawnAt(page, vertices));
+    expect(twins).toHaveLength(4);
+    await page.keyboard.press('b');
+    expect(await page.evaluate(() => window.halfedgeLab.state().exploded)).toBe(true);
+    for (const gap of gaps(await drawnAt(page, vertices), twins)) expect(gap).toBeGreaterThan(20);
+    await page.evaluate(() => window.halfedgeLab.openSample('torus.off'));
+    expect(await page.evaluate(() => window.halfedgeLab.state().exploded)).toBe(false);
+    await expect(page.locator('#explode')).toHaveAttribute('aria-pressed', 'false');
+  });
+
+  test('says the exploded view is for meshes of up to 150,000 triangles on a larger one', async ({ page }) => {
+    await openApp(page, 'cube.off');
+    // 78,400 quads: 156,800 triangles, picked in a worker
+    const base64 = Buffer.from(writeSoup(torus(280, 280), 'ply-binary')).toString('base64');
+    expect(await page.evaluate((text) => window.halfedgeLab.open(Uint8Array.from(atob(text), (c) => c.charCodeAt(0)), 'fine-torus.ply'), base64)).toBe(true);
+    await expect(page.locator('#explode')).toHaveAccessibleName('Explode parts (not available: it is for meshes of up to 150,000 triangles, and this one has 156,800)');
+    expect(await page.evaluate(() => window.halfedgeLab.explode(true))).toBe(false);
+    await expect(page.locator('#status')).toHaveText('No exploded view: it is for meshes of up to 150,000 triangles, and this one has 156,800.');
   });
 
   test('says what an edit did in the status line, and where an undo went back to', async ({ page }) => {

@@ -5,6 +5,7 @@
 export * from './attributes.js';
 export * from './build.js';
 export * from './circulators.js';
+export * from './components.js';
 export * from './change.js';
 export * from './live-ids.js';
 export * from './diff.js';

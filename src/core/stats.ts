@@ -4,6 +4,7 @@
  * χ = 2 − 2g − b (b = number of boundary loops).
  */
 import type { ChangeRecord } from './change.js';
+import { componentRoots } from './components.js';
 import { boundingBox, type BoundingBox, signedVolume, surfaceArea, triangleQuality, type TriangleQuality } from './geometry.js';
 import type { HalfedgeMesh } from './mesh.js';
 import { meshArrayIndex, meshArrays } from './mesh-arrays.js';
@@ -62,26 +63,12 @@ export function meshStats(mesh: HalfedgeMesh, report?: BuildReport): MeshStats {
   const { heNext, heVertex, heFace, eDeleted } = mesh;
   const nH = mesh.halfedgeSlots;
 
-  // components: union the two ends of every edge
-  const parent = new Int32Array(mesh.vertexSlots);
-  for (let v = 0; v < parent.length; v++) parent[v] = v;
-  const find = (v: number): number => {
-    while (parent[v] !== v) {
-      parent[v] = parent[parent[v]];
-      v = parent[v];
-    }
-    return v;
-  };
-  for (let e = 0; e < mesh.edgeSlots; e++) {
-    if (eDeleted[e]) continue;
-    const a = find(heVertex[2 * e]);
-    const b = find(heVertex[2 * e + 1]);
-    if (a !== b) parent[a < b ? b : a] = a < b ? a : b;
-  }
+  // components: numbered in the order they are first met, each vertex's part named by its root
+  const roots = componentRoots(mesh);
   const componentOf = new Int32Array(mesh.vertexSlots).fill(-1);
   const components: ComponentStats[] = [];
   const componentAt = (v: number): ComponentStats => {
-    const root = find(v);
+    const root = roots[v];
     if (componentOf[root] === -1) {
       componentOf[root] = components.length;
       components.push({

@@ -8,7 +8,7 @@ import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedg
 import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
-import type { StudentVerb, VerbArguments } from '../workers/protocol.js';
+import { PICK_IN_WORKER_ABOVE, type RenderPatch, type StudentVerb, type VerbArguments } from '../workers/protocol.js';
 import { byId, capitalized, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, problemHighlight, quizHighlight } from './highlights.js';
 import { boundaryLoopList, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
@@ -19,7 +19,7 @@ import { HistoryPanel } from './panels/history.js';
 import { type BoundaryLoop, renderHud } from './panels/hud.js';
 import { renderInspector } from './panels/inspector.js';
 import { renderLegend, renderValuesLegend } from './panels/legend.js';
-import { OperationsPanel } from './panels/operations.js';
+import { OperationsPanel, setAvailability } from './panels/operations.js';
 import type { PracticePanel } from './panels/practice.js';
 import { QuizPanel } from './panels/quiz.js';
 import { StepperPanel, steppingTitle } from './panels/stepper.js';
@@ -37,6 +37,7 @@ import { Opening } from './opening.js';
 import { type Tab, tabs, wireControls } from './controls.js';
 import { Inspection } from './inspection.js';
 import { ViewDetail } from './view-detail.js';
+import { cutPlaneOnShow, explodedMesh, explodedRender, explodeOffsets } from './explode.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, openedEntry, type ReplayStep, replayable, type ViewState } from './share.js';
@@ -44,6 +45,9 @@ import type { PanelName } from './embed.js';
 
 /** Label every vertex and face when the mesh has at most this many of them. */
 const MAX_ID_LABELS = 400;
+
+/** Why a mesh of one part has no exploded view. */
+const ONE_PART = 'the mesh is one connected part: there is nothing to pull apart';
 
 /** How long the changes must pause before the full counts and checks are asked for. */
 const DETAILS_AFTER_MS = 400;
@@ -72,7 +76,15 @@ export class App {
   readonly client: SessionClient;
   readonly viewer: Viewer;
   snapshot: Snapshot | null = null;
+  /** The page's copy of the session's mesh: what the records, tables and exports read. */
   mesh: HalfedgeMesh | null = null;
+  /**
+   * The mesh as the view draws it: `mesh` itself, or in the exploded view the same mesh with its
+   * parts pulled apart (see explode.ts). Everything drawn over the mesh, picked or framed reads it.
+   */
+  drawn: HalfedgeMesh | null = null;
+  /** Whether the exploded view is on: the parts of the mesh drawn pulled apart. */
+  exploded = false;
   /** The selection, the walk, the hover, the naming and the marks: what the student is looking at. */
   readonly inspection = new Inspection();
   filter: PickFilter = 'auto';
@@ -155,7 +167,7 @@ export class App {
       this.surface,
       this.arrows,
       this.byId('arrow-note'),
-      () => ({ mesh: this.mesh, stats: this.snapshot?.stats ?? null, inspection: this.inspection, scale: this.scale }),
+      () => ({ mesh: this.drawn, stats: this.snapshot?.stats ?? null, inspection: this.inspection, scale: this.scale }),
       () => this.frameAgainIfCovered(),
     );
     this.viewer.controls.addEventListener('end', () => this.detail.refreshIfPartial());
@@ -201,7 +213,7 @@ export class App {
       mesh: () => this.mesh,
       convention: () => this.inspection.convention,
       showPath: (question, picked) => {
-        this.inspection.marks.quiz = question && this.mesh ? quizHighlight(this.mesh, question.path, picked, picked !== null && isRight(question, picked)) : null;
+        this.inspection.marks.quiz = question ? quizHighlight(question.path, picked, picked !== null && isRight(question, picked)) : null;
         this.drawSelection();
       },
     });
@@ -349,7 +361,9 @@ export class App {
     this.snapshot = snapshot;
     this.opening.shown(snapshot);
     const mesh = (this.mesh = snapshot.mesh);
-    this.surface.update(snapshot.render, snapshot.renderPatch);
+    // a new model opens as its file has it
+    if (frame) this.exploded = false;
+    this.drawMesh(snapshot.renderPatch);
     // while stepping, a phase may colour the vertices by a value it computed
     renderValuesLegend(this.byId('values-legend'), this.surface.setVertexColours(snapshot.colours), `${snapshot.phase?.name ?? ''}: colour by value`);
     this.inspection.meshChanged(mesh, frame);
@@ -375,6 +389,7 @@ export class App {
       const grew = snapshot.history.index !== before.history.index || snapshot.history.items.length !== before.history.items.length;
       this.say(grew ? `${before.stepping.label}: done.` : `${before.stepping.label}: cancelled; the mesh is as it was.`);
     }
+    if (before?.stepping && !snapshot.stepping) this.offerExplodedView(before);
     this.history.update(snapshot);
     // a question on a changed mesh is asked again (its ids may be gone); a new model, or an
     // answered question's path on a changed mesh, leaves the view
@@ -407,6 +422,72 @@ export class App {
   }
 
   /**
+   * Draws the surface of the snapshot on show, and sets the mesh the other layers draw: the page's
+   * own, or in the exploded view one with its parts pulled apart, worked out again for every
+   * snapshot (an edit may join parts, or move them). The exploded view goes off where it no longer
+   * applies: on a mesh of one part, or one the picking worker holds.
+   */
+  private drawMesh(patch: RenderPatch | null): void {
+    const { mesh, render, history } = this.snapshot!;
+    const explosion = this.exploded && !render.picking ? explodeOffsets(mesh, cutPlaneOnShow(history)) : null;
+    this.exploded = explosion !== null;
+    this.drawn = explosion ? explodedMesh(mesh, explosion) : mesh;
+    // the moved positions are a copy, uploaded whole; the page's own were patched in place
+    this.surface.update(explosion ? explodedRender(render, explosion) : render, explosion ? null : patch);
+    this.byId('explode').setAttribute('aria-pressed', String(this.exploded));
+  }
+
+  /** Why the exploded view does not apply to the mesh on show (its button's tooltip), or null when it does. */
+  private explodeUnavailable(): string | null {
+    const snapshot = this.snapshot;
+    if (!snapshot) return 'no mesh is open';
+    const { render, stats, pending } = snapshot;
+    // a mesh this large is picked in a worker, from a hierarchy of its triangles where they are
+    if (render.picking) return `it is for meshes of up to ${PICK_IN_WORKER_ABOVE.toLocaleString('en')} triangles, and this one has ${render.counts.triangles.toLocaleString('en')}`;
+    // pending counts have not counted the parts since the last change: turning the view on counts them
+    if (!pending && stats.components < 2) return stats.components === 0 ? 'the mesh has no edges, so no parts to pull apart' : ONE_PART;
+    return null;
+  }
+
+  /**
+   * Turns the exploded view on or off (saying why not, when it does not apply), and frames the
+   * whole mesh again, as it grows or shrinks. Returns whether it is on.
+   */
+  setExploded(on: boolean): boolean {
+    if (!this.snapshot || on === this.exploded) return this.exploded;
+    const why = on ? this.explodeUnavailable() : null;
+    if (why === null) {
+      this.exploded = on;
+      this.drawMesh(null);
+    }
+    if (on && !this.exploded) {
+      this.say(`No exploded view: ${why ?? ONE_PART}.`);
+      return false;
+    }
+    // said first: framing keeps the mesh clear of the status line as it will read
+    this.say(on ? 'Exploded view: the parts are drawn pulled apart; the mesh itself has not moved. B puts them back.' : 'The parts are drawn where they are again.');
+    this.hover(this.inspection.hovered);
+    this.drawSelection();
+    this.drawPanels();
+    this.frameMesh();
+    void this.detail.refresh();
+    return this.exploded;
+  }
+
+  /**
+   * The end of a cut that kept both sides leaves its two sides touching, caps face to face: the
+   * status line says how to pull them apart. The view does not do it by itself: a student who
+   * sees the halves jump apart would take it that the cut moved them.
+   */
+  private offerExplodedView(before: Snapshot): void {
+    const snapshot = this.snapshot!;
+    const plane = cutPlaneOnShow(snapshot.history);
+    const ended = snapshot.history.index !== before.history.index;
+    if (!ended || !plane || this.exploded || snapshot.render.picking || !explodeOffsets(snapshot.mesh, plane)) return;
+    this.say(`${this.message} Its two sides touch: press B to see them pulled apart (only the view moves).`, 'status', { label: 'Explode parts', run: () => this.setExploded(true) });
+  }
+
+  /**
    * A view the app framed and nobody has moved since is framed again when an overlay has come
    * over the mesh (a phase card while stepping, the note that the arrows are too small to draw);
    * one the user placed, or a selection framed, stays.
@@ -416,8 +497,8 @@ export class App {
   }
 
   frameMesh(): void {
-    if (!this.mesh) return;
-    const { box, radius } = meshBounds(this.mesh);
+    if (!this.drawn) return;
+    const { box, radius } = meshBounds(this.drawn);
     this.viewer.frame(box, this.viewNormal(), radius);
     this.framedWhole = true;
   }
@@ -432,7 +513,7 @@ export class App {
 
   /** Brings an element and the faces around it to fill most of the view, seen from their front. */
   private frameAround(s: Selection): void {
-    const mesh = this.mesh;
+    const mesh = this.drawn;
     if (!mesh || !exists(mesh, s)) return;
     const { box, radius } = selectionBounds(mesh, s, this.inspection.convention);
     // close up, an element facing away would be seen from inside the surface: look at its front
@@ -461,11 +542,11 @@ export class App {
    */
   frameBoundaryLoop(index: number): boolean {
     const loop = this.boundaryLoops()[index];
-    if (!this.mesh || !loop) return false;
+    if (!this.drawn || !loop) return false;
     this.select({ kind: 'halfedge', id: loop.halfedge });
     // said first: framing keeps the loop clear of the status line as it will read
     this.say(`Boundary loop ${index + 1}: ${loop.length} edge${loop.length === 1 ? '' : 's'}, from h${loop.halfedge}; walk next to go round it.`);
-    const { box, radius, facing } = loopBounds(this.mesh, loop.halfedge);
+    const { box, radius, facing } = loopBounds(this.drawn, loop.halfedge);
     this.viewer.frame(box, this.viewNormal(), radius, facing ?? undefined);
     this.framedWhole = false;
     return true;
@@ -509,6 +590,7 @@ export class App {
 
   /** Shows or hides the cutting plane gizmo at `plane`. */
   showPlane(plane: [number, number, number, number] | null): void {
+    // on the mesh where it is, not as drawn: the plane says where the cut will go
     if (plane && this.mesh) this.gizmo.show(this.mesh, plane);
     else this.gizmo.hide();
   }
@@ -631,7 +713,7 @@ export class App {
    */
   selectInSight(selection: Selection): void {
     this.select(selection);
-    if (this.mesh && !this.inSight(this.mesh, selection)) this.frameSelection();
+    if (this.drawn && !this.inSight(this.drawn, selection)) this.frameSelection();
   }
 
   private inSight(mesh: HalfedgeMesh, s: Selection): boolean {
@@ -708,7 +790,7 @@ export class App {
 
   hover(selection: Selection | null): void {
     const hovered = this.inspection.hover(this.mesh, selection);
-    if (this.mesh && hovered) this.hoverLayer.show(this.mesh, hoverHighlight(hovered), this.scale);
+    if (this.drawn && hovered) this.hoverLayer.show(this.drawn, hoverHighlight(hovered), this.scale);
     else this.hoverLayer.clear();
     this.viewer.requestRender();
   }
@@ -736,8 +818,8 @@ export class App {
 
   /** The element under a point of the canvas (CSS pixels), with the current filter. */
   async pickAt(x: number, y: number, filter: PickFilter = this.filter): Promise<Selection | null> {
-    if (!this.mesh) return null;
-    return pick({ viewer: this.viewer, surface: this.surface, mesh: this.mesh, shown: this.arrows.shown, scale: this.scale }, x, y, filter);
+    if (!this.drawn) return null;
+    return pick({ viewer: this.viewer, surface: this.surface, mesh: this.drawn, shown: this.arrows.shown, scale: this.scale }, x, y, filter);
   }
 
   /** Shows a sentence in the status line (`alert` for errors: read out at once), with a button for what follows from it. */
@@ -778,7 +860,7 @@ export class App {
   }
 
   private drawSelection(): void {
-    const mesh = this.mesh;
+    const mesh = this.drawn;
     if (!mesh) return;
     this.selectionLayer.show(mesh, this.inspection.highlight(mesh), this.scale);
     const marks = this.phaseMarks();
@@ -796,6 +878,7 @@ export class App {
     renderInspector(this.byId('record'), this.byId('convention-note'), this.mesh, this.inspection.selection, this.inspection.convention, follow);
     renderBreadcrumb(this.byId('breadcrumb'), this.inspection.path, this.scale > 1 ? PRESENTATION_BREADCRUMB_STEPS : undefined);
     if (this.mesh && snapshot) this.operations.update(this.mesh, this.inspection.selection, snapshot.unavailable);
+    setAvailability(this.byId('explode'), 'Explode parts', this.explodeUnavailable(), 'Draw the parts of the mesh pulled apart, to see each one (B)');
     if (snapshot) {
       renderHud(this.byId('hud'), snapshot.stats, snapshot.problems, this.boundaryLoops(), {
         select: (s) => this.select(s),

@@ -16,6 +16,11 @@ export function automation(app: App) {
     if (!app.mesh) throw new Error('no mesh is open yet');
     return app.mesh;
   };
+  /** The mesh as drawn (in the exploded view, its parts pulled apart): where to click an element. */
+  const drawn = (): HalfedgeMesh => {
+    if (!app.drawn) throw new Error('no mesh is open yet');
+    return app.drawn;
+  };
   const asSelection = (element: string | Selection): Selection => {
     const s = typeof element === 'string' ? parseElementName(element) : element;
     if (!s) throw new Error(`'${String(element)}' is not an element name like h17, v4, f5 or e8`);
@@ -54,7 +59,7 @@ export function automation(app: App) {
     /** Where an element appears on the canvas (CSS pixels from the canvas's top-left), to click it. */
     screenPosition: (element: string | Selection) => {
       const s = asSelection(element);
-      const m = mesh();
+      const m = drawn();
       let point: [number, number, number];
       if (s.kind === 'halfedge') {
         const placement = placeArrow(m, s.id, newPlacement(), app.scale);
@@ -82,6 +87,8 @@ export function automation(app: App) {
     /** Marks the seams (edges where the file split its vertices; the File tab's button) or clears them; resolves to how many were marked. */
     showSeams: (on: boolean) => app.toggleSeams(on),
     setPresentation: (on: boolean) => app.setPresentation(on),
+    /** Turns the exploded view on or off (the *Explode parts* button, B); resolves to whether it is on (off on a mesh of one part). */
+    explode: async (on: boolean) => app.setExploded(on),
     /** Selects boundary loop `index`'s halfedge and frames the loop (the HUD's “frame” button); false when there is no such loop. */
     frameBoundaryLoop: (index: number) => app.frameBoundaryLoop(index),
     /** The student's verbs (protocol.ts): `start(request)`, `step()`, `stepBack()`, `runToEnd()`, `cancel()`, `edit(request)`, `undo()`, `redo()`, `jump(index)`; each resolves to `{ version }`, or null when refused (the page says why). */
@@ -141,6 +148,8 @@ export function automation(app: App) {
       repairs: app.snapshot?.report?.repairs.map((r) => ({ kind: r.kind, count: r.count })) ?? [],
       /** Whether the seams are marked in the view. */
       seamsShown: app.seamsShown,
+      /** Whether the exploded view is on: the parts of the mesh drawn pulled apart. */
+      exploded: app.exploded,
       /** Whether the cutting plane gizmo is on the view (Show plane); an operation's end hides it. */
       planeShown: app.planeShown,
       /** Each boundary loop of the mesh on screen: one of its boundary halfedges and its number of edges. */

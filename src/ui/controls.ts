@@ -6,6 +6,7 @@
 import type { App } from './app.js';
 import { byId } from './dom.js';
 import { handleKey } from './keys.js';
+import { whenAvailable } from './panels/operations.js';
 import type { Convention } from './records.js';
 import type { PickFilter } from './scene/picking.js';
 
@@ -53,6 +54,7 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
   onClick('frame-mesh', () => app.frameMesh());
   onClick('frame-selection', () => app.frameSelection());
   onClick('top-view', () => app.toggleTopView());
+  find('explode').addEventListener('click', whenAvailable(() => app.setExploded(!app.exploded)));
   onClick('show-ids', () => app.toggleIds());
   onClick('tables-fold', () => app.showTables(!app.tablesShown));
   onClick('walk-back', () => app.back());

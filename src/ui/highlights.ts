@@ -3,31 +3,18 @@
  * `twin`, `face` and `origin` together; for a vertex its outgoing halfedge and one-ring; for a face
  * its loop of halfedges. Pure: it returns a description the highlight layer draws.
  */
-import { faceCentroid, type HalfedgeMesh, type Phase, type RepairIncident } from '../core/index.js';
+import { type HalfedgeMesh, type Phase, type RepairIncident } from '../core/index.js';
 import { colors, hollowRoles, phaseColors } from './colors.js';
 import type { Convention } from './records.js';
 import { elementName, type Selection } from './selection.js';
 import { emptyHighlight, type HighlightSpec } from './scene/highlight.js';
 
-type Point = [number, number, number];
-
-/** Where a label for halfedge h goes: the middle of its arrow. */
-function arrowMiddle(mesh: HalfedgeMesh, h: number): Point {
-  const a = mesh.position(mesh.origin(h));
-  const b = mesh.position(mesh.target(h));
-  const side = mesh.face(h) !== -1 ? faceCentroid(mesh, mesh.face(h)) : null;
-  const mid: Point = [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2];
-  if (!side) return mid;
-  // a quarter of the way towards the face's centre, so twin labels do not overlap
-  return [mid[0] + 0.25 * (side[0] - mid[0]), mid[1] + 0.25 * (side[1] - mid[1]), mid[2] + 0.25 * (side[2] - mid[2])];
-}
-
 export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention: Convention): HighlightSpec {
   const spec = emptyHighlight();
-  const label = (text: string, at: Point, color: string) => spec.labels.push({ text, at, color });
+  const label = (text: string, on: Selection, color: string) => spec.labels.push({ text, on, color });
   const halfedge = (id: number, color: string, text?: string, hollow = false) => {
     spec.halfedges.push({ id, color, hollow });
-    if (text) label(text, arrowMiddle(mesh, id), color);
+    if (text) label(text, { kind: 'halfedge', id }, color);
   };
   switch (s.kind) {
     case 'halfedge': {
@@ -37,7 +24,7 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
       const face = mesh.face(h);
       if (face !== -1) {
         spec.faces.push({ id: face, color: colors.face });
-        label(`f${face}`, faceCentroid(mesh, face) as Point, colors.face);
+        label(`f${face}`, { kind: 'face', id: face }, colors.face);
       }
       halfedge(next, colors.next, `next h${next}`);
       if (prev !== next) halfedge(prev, colors.prev, `prev h${prev}`, hollowRoles.has('prev'));
@@ -45,13 +32,13 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
       halfedge(h, colors.selected, `h${h}`);
       const vertex = convention === 'origin' ? mesh.origin(h) : mesh.origin(next);
       spec.vertices.push({ id: vertex, color: colors.origin });
-      label(`${convention} v${vertex}`, mesh.position(vertex) as Point, colors.origin);
+      label(`${convention} v${vertex}`, { kind: 'vertex', id: vertex }, colors.origin);
       break;
     }
     case 'vertex': {
       const v = s.id;
       spec.vertices.push({ id: v, color: colors.origin });
-      label(`v${v}`, mesh.position(v) as Point, colors.origin);
+      label(`v${v}`, s, colors.origin);
       const start = mesh.vertexHalfedge(v);
       if (start < 0) break;
       let h = start;
@@ -67,7 +54,7 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
     case 'face': {
       const f = s.id;
       spec.faces.push({ id: f, color: colors.face });
-      label(`f${f}`, faceCentroid(mesh, f) as Point, colors.face);
+      label(`f${f}`, s, colors.face);
       const start = mesh.faceHalfedge(f);
       let h = start;
       do {
@@ -83,9 +70,7 @@ export function selectionHighlight(mesh: HalfedgeMesh, s: Selection, convention:
       const h = mesh.edgeHalfedge(e);
       halfedge(h, colors.selected, `h${h}`);
       halfedge(mesh.twin(h), colors.twin, `h${mesh.twin(h)}`);
-      const a = mesh.position(mesh.origin(h));
-      const b = mesh.position(mesh.origin(mesh.twin(h)));
-      label(`e${e}`, [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2], colors.selected);
+      label(`e${e}`, s, colors.selected);
       break;
     }
   }
@@ -139,7 +124,7 @@ export function phaseMeanings(spec: HighlightSpec): PhaseMeaning[] {
 export type PhaseMeaning = keyof typeof phaseColors;
 
 /** A quiz path: the start, each step, and the answer (right in green, a wrong pick in vermillion). */
-export function quizHighlight(mesh: HalfedgeMesh, path: Selection[], picked: Selection | null, right: boolean): HighlightSpec {
+export function quizHighlight(path: Selection[], picked: Selection | null, right: boolean): HighlightSpec {
   const spec = emptyHighlight();
   path.forEach((s, i) => {
     const last = i === path.length - 1;
@@ -147,27 +132,16 @@ export function quizHighlight(mesh: HalfedgeMesh, path: Selection[], picked: Sel
     if (s.kind === 'halfedge') spec.halfedges.push({ id: s.id, color });
     if (s.kind === 'vertex') spec.vertices.push({ id: s.id, color });
     if (s.kind === 'face') spec.faces.push({ id: s.id, color });
-    const at = labelPoint(mesh, s);
-    spec.labels.push({ text: i === 0 ? `start ${elementName(s)}` : elementName(s), at, color });
+    spec.labels.push({ text: i === 0 ? `start ${elementName(s)}` : elementName(s), on: s, color });
   });
   if (picked && !right) {
     const color = colors.twin;
     if (picked.kind === 'halfedge') spec.halfedges.push({ id: picked.id, color });
     if (picked.kind === 'vertex') spec.vertices.push({ id: picked.id, color });
     if (picked.kind === 'face') spec.faces.push({ id: picked.id, color });
-    spec.labels.push({ text: `your pick ${elementName(picked)}`, at: labelPoint(mesh, picked), color });
+    spec.labels.push({ text: `your pick ${elementName(picked)}`, on: picked, color });
   }
   return spec;
-}
-
-/** Where a label for an element goes. */
-export function labelPoint(mesh: HalfedgeMesh, s: Selection): Point {
-  if (s.kind === 'halfedge') return arrowMiddle(mesh, s.id);
-  if (s.kind === 'vertex') return mesh.position(s.id) as Point;
-  if (s.kind === 'face') return faceCentroid(mesh, s.id) as Point;
-  const a = mesh.position(mesh.origin(mesh.edgeHalfedge(s.id)));
-  const b = mesh.position(mesh.origin(mesh.twin(mesh.edgeHalfedge(s.id))));
-  return [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2];
 }
 
 /**
@@ -179,12 +153,12 @@ export function problemHighlight(mesh: HalfedgeMesh, incident: RepairIncident, k
   for (const v of incident.vertices ?? []) {
     if (v >= mesh.vertexSlots || mesh.vDeleted[v]) continue;
     spec.vertices.push({ id: v, color: colors.problem });
-    spec.labels.push({ text: `${kind} v${v}`, at: mesh.position(v) as Point, color: colors.problem });
+    spec.labels.push({ text: `${kind} v${v}`, on: { kind: 'vertex', id: v }, color: colors.problem });
   }
   for (const f of incident.faces ?? []) {
     if (f >= mesh.faceSlots || mesh.fDeleted[f]) continue;
     spec.faces.push({ id: f, color: colors.problem });
-    spec.labels.push({ text: `${kind} f${f}`, at: faceCentroid(mesh, f) as Point, color: colors.problem });
+    spec.labels.push({ text: `${kind} f${f}`, on: { kind: 'face', id: f }, color: colors.problem });
   }
   return spec;
 }
@@ -203,7 +177,7 @@ export function combineHighlights(a: HighlightSpec, b: HighlightSpec): Highlight
 /** Every vertex and face labelled with its id. */
 export function idLabels(mesh: HalfedgeMesh): HighlightSpec {
   const spec = emptyHighlight();
-  for (const v of mesh.vertices()) spec.labels.push({ text: `v${v}`, at: mesh.position(v) as [number, number, number], color: colors.origin });
-  for (const f of mesh.faces()) spec.labels.push({ text: `f${f}`, at: faceCentroid(mesh, f) as [number, number, number], color: colors.face });
+  for (const v of mesh.vertices()) spec.labels.push({ text: `v${v}`, on: { kind: 'vertex', id: v }, color: colors.origin });
+  for (const f of mesh.faces()) spec.labels.push({ text: `f${f}`, on: { kind: 'face', id: f }, color: colors.face });
   return spec;
 }

@@ -24,6 +24,7 @@ export const keyBindings: KeyBinding[] = [
   { keys: ['escape'], help: 'close this help, or clear the selection (and end a quiz question)', run: (app) => (app.helpShown ? app.toggleHelp(false) : app.select(null)) },
   { keys: ['home', 'z'], help: 'frame the mesh / the selection', run: (app, key) => (key === 'home' ? app.frameMesh() : app.frameSelection()) },
   { keys: ['o'], help: 'top view on or off', run: (app) => app.toggleTopView() },
+  { keys: ['b'], help: "exploded view on or off: the parts drawn pulled apart (a cut's two sides, to see the caps)", run: (app) => void app.setExploded(!app.exploded) },
   { keys: ['i'], help: 'label every vertex and face (small meshes)', run: (app) => app.toggleIds() },
   { keys: ['k'], help: 'hide or show the legend and the counts on the view', run: (app) => app.toggleOverlays() },
   { keys: ['d'], help: 'fold or open the record tables (folded in presentation mode)', run: (app) => app.showTables(!app.tablesShown) },

@@ -9,7 +9,6 @@
 import type { HalfedgeMesh } from '../core/index.js';
 import { describeWrite, type PracticeWrite } from '../core/practice/writes.js';
 import { colors, hollowRoles } from './colors.js';
-import { labelPoint } from './highlights.js';
 import { emptyHighlight, type HighlightSpec } from './scene/highlight.js';
 import { elementName, exists, type Selection } from './selection.js';
 
@@ -36,7 +35,7 @@ export function writeMarks(mesh: HalfedgeMesh, writes: readonly PracticeWrite[])
     if (s.kind === 'vertex') spec.vertices.push({ id: s.id, color });
     if (s.kind === 'face') spec.faces.push({ id: s.id, color });
     if (s.kind === 'edge') spec.edges.push({ id: s.id, color });
-    if (label) spec.labels.push({ text: label, at: labelPoint(mesh, s), color });
+    if (label) spec.labels.push({ text: label, on: s, color });
   };
   writes.forEach((write, i) => {
     const labelled = i >= writes.length - LABELLED_WRITES;
@@ -62,7 +61,7 @@ export function readMarks(mesh: HalfedgeMesh, visits: readonly number[], step: n
   const current = visits[step];
   if (current !== undefined && alive({ kind: 'halfedge', id: current })) {
     spec.halfedges.push({ id: current, color: colors.selected });
-    spec.labels.push({ text: `read ${step + 1}: h${current}`, at: labelPoint(mesh, { kind: 'halfedge', id: current }), color: colors.selected });
+    spec.labels.push({ text: `read ${step + 1}: h${current}`, on: { kind: 'halfedge', id: current }, color: colors.selected });
   }
   return spec;
 }

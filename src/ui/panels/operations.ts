@@ -269,11 +269,11 @@ export class OperationsPanel {
 /**
  * Marks a button available, or not with the reason as its tooltip and in its accessible name.
  * `aria-disabled` rather than `disabled`: a disabled button gets no hover, so no tooltip, and
- * cannot be focused to hear why.
+ * cannot be focused to hear why. `tip`: the tooltip while available (the label unless given).
  */
-export function setAvailability(button: HTMLButtonElement, label: string, reason: string | null): void {
+export function setAvailability(button: HTMLButtonElement, label: string, reason: string | null, tip = label): void {
   button.setAttribute('aria-disabled', String(reason !== null));
-  button.title = reason ?? label;
+  button.title = reason ?? tip;
   button.setAttribute('aria-label', reason ? `${label} (not available: ${reason})` : label);
 }
 

@@ -22,6 +22,8 @@ import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
 import type { HalfedgeMesh } from '../../core/index.js';
 import { newPlacement, placeArrow } from './arrow-placement.js';
 import { arrowShape, writeArrowMatrix } from './arrows.js';
+import { labelPoint } from './label-point.js';
+import type { Selection } from '../selection.js';
 
 export interface HighlightSpec {
   /** `hollow`: drawn with a white core, the second cue beside the colour (see `hollowRoles`). */
@@ -29,7 +31,8 @@ export interface HighlightSpec {
   faces: Array<{ id: number; color: string }>;
   vertices: Array<{ id: number; color: string }>;
   edges: Array<{ id: number; color: string }>;
-  labels: Array<{ text: string; at: [number, number, number]; color: string }>;
+  /** Each on an element, which the layer finds on the mesh it draws (see label-point.ts). */
+  labels: Array<{ text: string; on: Selection; color: string }>;
 }
 
 export function emptyHighlight(): HighlightSpec {
@@ -119,7 +122,7 @@ export class HighlightLayer {
       dots.renderOrder = 3;
       this.group.add(withNoRaycast(dots));
     }
-    for (const { text, at, color } of spec.labels) {
+    for (const { text, on, color } of spec.labels) {
       // the anchor is what the label renderer positions; the tag inside may be nudged off others
       const anchor = document.createElement('div');
       const tag = document.createElement('span');
@@ -128,7 +131,7 @@ export class HighlightLayer {
       tag.style.borderColor = color;
       anchor.append(tag);
       const label = new CSS2DObject(anchor);
-      label.position.set(...at);
+      label.position.set(...labelPoint(mesh, on));
       this.group.add(label);
     }
   }
