@@ -38,6 +38,34 @@ test.describe('the teaching app', () => {
     expect(record.twin).toBe('h16');
   });
 
+  // on the torus's inner wall, seen at a glancing angle, the arrows lie within a vertex's reach:
+  // a click on an arrow picked the vertex beside it
+  test('picks the arrow under the pointer on a torus, even where a vertex is within reach', async ({ page }) => {
+    await openApp(page, 'torus.off');
+    const { crowded, wrong } = await page.evaluate(async () => {
+      const lab = window.halfedgeLab;
+      const halfedges = 2 * lab.state().stats!.edges;
+      let crowded = 0;
+      const wrong: string[] = [];
+      for (let h = 0; h < halfedges; h++) {
+        const at = lab.screenPosition(`h${h}`);
+        if (!at.visible) continue;
+        const { origin, next } = lab.record(`h${h}`);
+        const ends = [origin, lab.record(next).origin].map((v) => lab.screenPosition(v));
+        // only arrows drawn within a vertex's reach (12 px), where a click used to pick the vertex
+        if (Math.min(...ends.map((p) => Math.hypot(p.x - at.x, p.y - at.y))) > 12) continue;
+        // and only the arrows in front (the point is on the face that was hit)
+        if ((await lab.pickAt(at.x, at.y, 'halfedge')) !== `h${h}`) continue;
+        crowded++;
+        const picked = await lab.pickAt(at.x, at.y);
+        if (picked !== `h${h}`) wrong.push(`h${h} → ${picked}`);
+      }
+      return { crowded, wrong };
+    });
+    expect(crowded).toBeGreaterThan(10);
+    expect(wrong).toEqual([]);
+  });
+
   // a record link used to start a new walk, so Back did nothing
   test('follows a pointer of the record as a step of the walk, which Back undoes', async ({ page }) => {
     await openApp(page, 'disk.off');

@@ -1,7 +1,7 @@
 /**
  * Turning a click into the element the student meant. The ray finds the face under the pointer;
- * then distances *on screen* decide: close to a vertex picks the vertex, close to an arrow picks
- * that halfedge, otherwise the face. A filter restricts picking to one kind. Clicks just outside
+ * then distances *on screen* decide: close to a vertex or an arrow picks the nearer of the two,
+ * otherwise the face. A filter restricts picking to one kind. Clicks just outside
  * the surface can still pick the dashed arrows of boundary halfedges.
  */
 import type { HalfedgeMesh } from '../../core/index.js';
@@ -72,10 +72,15 @@ export async function pick(context: PickContext, x: number, y: number, filter: P
       );
       return edge && (hit || edge.distance < 3 * ARROW_RADIUS * scale) ? { kind: 'edge', id: edge.id >> 1 } : null;
     }
-    case 'auto':
-      if (nearestVertex && nearestVertex.distance <= VERTEX_RADIUS * scale) return { kind: 'vertex', id: nearestVertex.id };
-      if (nearestHalfedge && nearestHalfedge.distance <= ARROW_RADIUS * scale) return { kind: 'halfedge', id: nearestHalfedge.id };
+    case 'auto': {
+      // the nearer of the two wins: where faces are seen at a glancing angle (a torus's inner
+      // wall) their arrows lie within a vertex's radius, and a click on an arrow means the arrow
+      const vertex = nearestVertex && nearestVertex.distance <= VERTEX_RADIUS * scale ? nearestVertex : null;
+      const arrow = nearestHalfedge && nearestHalfedge.distance <= ARROW_RADIUS * scale ? nearestHalfedge : null;
+      if (vertex && (!arrow || vertex.distance <= arrow.distance)) return { kind: 'vertex', id: vertex.id };
+      if (arrow) return { kind: 'halfedge', id: arrow.id };
       return hit ? { kind: 'face', id: hit.face } : null;
+    }
   }
 }
 
