@@ -83,6 +83,18 @@ test('after a file is opened from the picker, the keys work at once', async ({ p
   expect(appErrors(page)).toEqual([]);
 });
 
+test('after a sample is chosen from the menu, the keys are the view\'s: M is presentation mode, not the Möbius strip', async ({ page }) => {
+  await openApp(page, 'disk.off');
+  // where choosing from the menu leaves the focus: on the menu
+  const menu = page.getByRole('combobox', { name: 'Sample model' });
+  await menu.focus();
+  await menu.selectOption('cube.off');
+  await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('cube.off');
+  await page.keyboard.press('m');
+  await expect(page.locator('#presentation')).toHaveAttribute('aria-pressed', 'true');
+  expect(await page.evaluate(() => window.halfedgeLab.state().file?.name)).toBe('cube.off');
+});
+
 test('the glTF export says, before saving, how many polygons become how many triangles', async ({ page }, testInfo) => {
   for (const [width, height] of [
     [1280, 720],

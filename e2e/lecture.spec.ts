@@ -102,4 +102,14 @@ test.describe('the cutting plane', () => {
       await expect(show).toHaveAttribute('aria-pressed', 'false');
     });
   }
+
+  test('is hidden when another mesh is opened', async ({ page }) => {
+    await openApp(page, 'torus.off');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    await page.getByRole('button', { name: 'Show plane' }).click();
+    expect((await state(page)).planeShown).toBe(true);
+    await page.getByRole('combobox', { name: /sample/i }).selectOption('cube.off');
+    await expect.poll(async () => (await state(page)).file?.name).toBe('cube.off');
+    expect((await state(page)).planeShown).toBe(false);
+  });
 });

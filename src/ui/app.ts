@@ -379,9 +379,9 @@ export class App {
     // while stepping, the Operate tab puts the stepper's buttons first
     this.frame.classList.toggle('stepping', snapshot.stepping !== null || snapshot.ended !== null);
     this.drawLegend();
-    // an operation that ended (run through or cancelled) takes the plane away: its square tints
-    // the view, and its preview shows where it crossed the mesh before
-    if (before?.stepping && !snapshot.stepping) this.operations.hidePlane();
+    // an operation that ended (run through or cancelled), or another mesh opened, takes the plane
+    // away: its square tints the view, and its preview shows where it crossed the mesh before
+    if ((before?.stepping && !snapshot.stepping) || frame) this.operations.hidePlane();
     const stepping = steppingTitle(snapshot);
     if (stepping) this.say(`${stepping}.`);
     else if (before?.stepping && !frame) {

@@ -34,8 +34,9 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
     find<HTMLSelectElement>(id).addEventListener('change', (event) => run((event.target as HTMLSelectElement).value));
 
   // a field that has the focus takes the keys as typing (see the keydown listener below); once a
-  // file is chosen or dropped, they are the view's again at once: the picker leaves the focus on
-  // its input, and a lecturer who opens a file then presses M expects presentation mode
+  // file or a sample is chosen, they are the view's again at once: the picker and the menu keep
+  // the focus, and a lecturer who opens a file then presses M expects presentation mode (the menu
+  // would take M as the first letter of a sample, and open that one)
   const keysToView = () => {
     const focused = root.activeElement;
     if (!(focused instanceof HTMLElement) || !focused.closest(FIELDS)) return;
@@ -48,7 +49,10 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
     await app.opening.openFiles([...(fileInput.files ?? [])]);
     fileInput.value = '';
   });
-  onChange('sample-select', (file) => void app.opening.openSample(file));
+  onChange('sample-select', (file) => {
+    keysToView();
+    void app.opening.openSample(file);
+  });
   onChange('pick-filter', (filter) => (app.filter = filter as PickFilter));
   onChange('convention', (convention) => app.setConvention(convention as Convention));
   onClick('frame-mesh', () => app.frameMesh());
