@@ -52,6 +52,26 @@ describe('grade on the command line', () => {
     expect((await grade('no-such-exercise', wrong('syntax'))).stderr).toContain("unknown exercise 'no-such-exercise'");
   });
 
+  it('gives a solution that cannot load the same tests and max_score as one that runs, each failed with why', async () => {
+    const runs = JSON.parse((await grade('collapse-edge', 'tests/practice/solutions/collapse-edge.js', '--json')).stdout);
+    const refused = await grade('collapse-edge', wrong('syntax'), '--json');
+    expect(refused.status).toBe(2);
+    const results = JSON.parse(refused.stdout);
+    expect(results.max_score).toBe(runs.max_score);
+    expect(results.score).toBe(0);
+    expect(results.tests.map((t: { name: string }) => t.name)).toEqual(runs.tests.map((t: { name: string }) => t.name));
+    expect(results.tests[0].output).toContain('syntax error');
+  });
+
+  it('lists every built-in exercise id, one per line, with --list', async () => {
+    const { status, stdout } = await grade('--list');
+    expect(status).toBe(0);
+    const ids = stdout.trim().split('\n');
+    expect(ids).toContain('flip-edge');
+    expect(ids).toContain('collapse-edge');
+    expect(new Set(ids).size).toBe(ids.length);
+  });
+
   it('stops code that never returns within the time limit, and does not run the rest', async () => {
     const { status, stdout, ms } = await grade('vertex-degree', wrong('spin'));
     expect(status).toBe(1);

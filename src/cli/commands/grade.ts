@@ -1,7 +1,7 @@
 import { dirname, resolve } from 'node:path';
 import { Worker } from 'node:worker_threads';
 import { InvalidInputError } from '../../core/errors.js';
-import { type Exercise, findExercise, exercises, type GradeReport, gradeSolution, parseExercise, SolutionError } from '../../core/practice/index.js';
+import { checkNames, type Exercise, findExercise, exercises, type GradeReport, gradeSolution, parseExercise, SolutionError } from '../../core/practice/index.js';
 import { type SandboxPort, sandboxRunner } from '../../workers/practice-runner.js';
 import { MEMORY_LIMIT_MB } from '../../workers/practice-sandbox.js';
 import { workerEntry } from '../../node/worker-entry.js';
@@ -10,9 +10,13 @@ import type { Command } from './index.js';
 
 
 export const gradeCommand: Command = {
-  usage: 'grade EXERCISE SOLUTION.js [--json]',
-  summary: 'run a practice solution (an exercise id or file); exit 0 all checks pass, 1 some fail, 2 it cannot load',
+  usage: 'grade EXERCISE SOLUTION.js [--json] | grade --list',
+  summary: 'run a practice solution (an exercise id or file); exit 0 all checks pass, 1 some fail, 2 it cannot load; --list prints the built-in exercise ids',
   async run(args) {
+    if (args.length === 1 && args[0] === '--list') {
+      for (const exercise of exercises) console.log(exercise.id);
+      return 0;
+    }
     const { values, positionals } = parseOptions(args, { json: { type: 'boolean' } }, 2);
     const [exerciseArg, solutionPath] = positionals as [string, string];
     const exercise = loadExercise(exerciseArg);
@@ -47,8 +51,9 @@ export function gradescope(report: GradeReport) {
   return { score: tests.reduce((sum, t) => sum + t.score, 0), max_score: tests.length, tests };
 }
 
-function gradescopeRefused(exercise: Exercise, message: string) {
-  const tests = exercise.fixtures.map((fixture) => ({ name: `${fixture.name}: loads`, score: 0, max_score: 1, status: 'failed', output: message }));
+/** The same tests as `gradescope` would list, each failed with why the solution did not load: the same `max_score` either way. */
+export function gradescopeRefused(exercise: Exercise, message: string) {
+  const tests = checkNames(exercise).map((name) => ({ name, score: 0, max_score: 1, status: 'failed', output: message }));
   return { score: 0, max_score: tests.length, output: message, tests };
 }
 

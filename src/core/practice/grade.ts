@@ -47,6 +47,18 @@ export interface FixtureResult {
   after: HalfedgeMesh;
 }
 
+/**
+ * What each fixture is checked for, by the kind of exercise: a query's answer; an edit's mesh
+ * (valid) and result (as the library's). A solution that cannot load fails the same checks, so
+ * an exercise is always worth the same points.
+ */
+export const FIXTURE_CHECKS = { query: ['answer'], edit: ['valid mesh', 'same as the library'] } as const;
+
+/** The name of every check a graded run of `exercise` gives, in order. */
+export function checkNames(exercise: Exercise): string[] {
+  return exercise.fixtures.flatMap((fixture) => FIXTURE_CHECKS[exercise.kind].map((what) => `${fixture.name}: ${what}`));
+}
+
 /** Above this many validations' worth of work (writes × halfedges), the first broken write is not searched. */
 const MAX_TRACE_WORK = 20_000_000;
 
@@ -63,7 +75,7 @@ export function gradeFixture(
 ): FixtureResult {
   const after = replayWrites(before.clone(), output.writes);
   const checks: Check[] = [];
-  const check = (what: string, message: string | null) => checks.push({ name: `${fixture.name}: ${what}`, passed: message === null, message: message ?? 'passed' });
+  const check = (what: (typeof FIXTURE_CHECKS)[keyof typeof FIXTURE_CHECKS][number], message: string | null) => checks.push({ name: `${fixture.name}: ${what}`, passed: message === null, message: message ?? 'passed' });
   const failure = output.error ? describeError(output) : null;
   let firstBroken: FirstBroken | null = null;
 
