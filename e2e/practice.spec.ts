@@ -14,6 +14,26 @@ async function typeAndRun(page: Page, code: string): Promise<void> {
 }
 
 test.describe('practice mode', () => {
+  test('at 1280 × 720 the view, at least 20 lines of code and the writes of a run are in sight together', async ({ page }, testInfo) => {
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await openAppAt(page, '/?exercise=flip-edge');
+    await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
+    await typeAndRun(page, readFileSync(new URL('../tests/practice/solutions/wrong/flip-forgets-vertex.js', import.meta.url), 'utf8'));
+    await expect(page.locator('.practice-summary')).toContainText('checks pass', { timeout: 15_000 });
+    await page.screenshot({ path: testInfo.outputPath('practice-1280x720.png') });
+    // the editor's box (its text scrolls inside it) holds 20 lines, all of it on screen
+    const editor = (await page.locator('.practice-editor').boundingBox())!;
+    const line = (await page.locator('.practice-editor .cm-line').first().boundingBox())!;
+    expect(editor.height / line.height).toBeGreaterThanOrEqual(20);
+    await expect(page.locator('.practice-editor')).toBeInViewport({ ratio: 1 });
+    await expect(page.getByRole('button', { name: 'Run the solution' })).toBeInViewport({ ratio: 1 });
+    await expect(page.locator('.practice-write-list li.current')).toBeInViewport({ ratio: 0.95 });
+    await expect(page.locator('.practice-broken')).toBeInViewport();
+    const view = (await page.locator('#viewport').boundingBox())!;
+    expect(view.width).toBeGreaterThan(500);
+    expect(view.height).toBeGreaterThan(300);
+  });
+
   test('?exercise=flip-edge: a correct flip passes, a wrong one is told its first broken invariant, and its writes can be stepped', async ({ page }, testInfo) => {
     await openAppAt(page, '/?exercise=flip-edge');
     await expect(page.locator('#tab-practice')).toHaveAttribute('aria-selected', 'true');

@@ -664,6 +664,12 @@ export class App {
       this.byId(`tab-${tab}`).setAttribute('aria-selected', String(tab === name));
       this.byId(`pane-${tab}`).hidden = tab !== name;
     }
+    // Practice widens the side column, for the code beside the task and what a run wrote: the
+    // view narrows, and a mesh framed whole is framed again once the layout has settled
+    const practising = name === 'practice';
+    if (this.frame.classList.contains('practising') === practising) return;
+    this.frame.classList.toggle('practising', practising);
+    if (this.framedWhole) requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
   }
 
   // -----------------------------------------------------------------------------------------------

@@ -96,25 +96,24 @@ export class PracticePanel {
     container: HTMLElement,
     private readonly actions: PracticeActions,
   ) {
+    // three parts, stacked in a narrow column and side by side in a wide one (see the style):
+    // the task, the code, and what a run found
     replace(
       container,
-      el('label', { class: 'practice-pick' }, 'Exercise ', this.select),
-      this.task,
-      el('div', { class: 'practice-hint-row' }, this.hintButton),
-      this.hints,
-      this.editorHost,
+      el('div', { class: 'practice-brief' }, el('label', { class: 'practice-pick' }, 'Exercise ', this.select), this.task, el('div', { class: 'practice-hint-row' }, this.hintButton), this.hints),
       el(
         'div',
-        { class: 'practice-buttons' },
-        this.runButton,
-        el('button', { type: 'button', 'aria-label': 'Start again from the starter code', onclick: () => this.setCode(this.exercise.starter) }, 'Starter code'),
-        el('button', { type: 'button', 'aria-label': 'Export all solutions as one file', onclick: () => this.exportSolutions() }, 'Export'),
+        { class: 'practice-code' },
+        this.editorHost,
+        el(
+          'div',
+          { class: 'practice-buttons' },
+          this.runButton,
+          el('button', { type: 'button', 'aria-label': 'Start again from the starter code', onclick: () => this.setCode(this.exercise.starter) }, 'Starter code'),
+          el('button', { type: 'button', 'aria-label': 'Export all solutions as one file', onclick: () => this.exportSolutions() }, 'Export'),
+        ),
       ),
-      this.summary,
-      this.checks,
-      this.broken,
-      this.writes,
-      this.reads,
+      el('div', { class: 'practice-results' }, this.summary, this.checks, this.broken, this.writes, this.reads),
     );
     this.editorHost.addEventListener('keydown', (event) => {
       if (event.key === 'Enter' && (event.ctrlKey || event.metaKey)) {
