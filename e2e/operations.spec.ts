@@ -43,7 +43,9 @@ test.describe('stepping operations, history and export', () => {
     const selection = await page.evaluate(() => window.halfedgeLab.state().selection);
     expect(selection).toMatch(/^v\d+$/);
     await expect(page.locator('#status')).toContainText('vertex 0 joined 2 fans');
-    await expect(page.locator('.labels')).toContainText('non-manifold-vertex v0');
+    // told in words, fan by fan: the file's vertex, and the mesh's copies
+    await expect(page.locator('.labels')).toContainText('file vertex 0 joined 2 fans: this one keeps v0');
+    await expect(page.locator('.labels')).toContainText('this fan got its own copy, v12');
     await page.screenshot({ path: testInfo.outputPath('repairs.png') });
   });
 

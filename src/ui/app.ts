@@ -4,13 +4,13 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { Vector3 } from 'three';
-import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident } from '../core/index.js';
+import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
 import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import type { StudentVerb, VerbArguments } from '../workers/protocol.js';
 import { byId, capitalized, el } from './dom.js';
-import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, problemHighlight, quizHighlight } from './highlights.js';
+import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, quizHighlight } from './highlights.js';
 import { boundaryLoopList, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
 import { incidentTarget, renderFileInfo } from './panels/file-info.js';
@@ -36,6 +36,7 @@ import { Viewer } from './scene/viewer.js';
 import { Opening } from './opening.js';
 import { type Tab, tabs, wireControls } from './controls.js';
 import { Inspection } from './inspection.js';
+import { repairStory } from './repair-story.js';
 import { ViewDetail } from './view-detail.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
 import { isRight } from './quiz.js';
@@ -643,11 +644,11 @@ export class App {
     return onScreen && (!facing || facing.dot(toCamera) > 0.3);
   }
 
-  /** Selects the first element of a repair and marks all of its elements as problems. */
-  showProblem(incident: RepairIncident, kind: string, first: Selection): void {
+  /** Selects the first element of a repair and tells the repair over the view (see repair-story.ts). */
+  showProblem(incident: RepairIncident, kind: RepairKind, first: Selection): void {
     if (!this.mesh) return;
     this.select(first);
-    this.inspection.marks.problem = problemHighlight(this.mesh, incident, kind);
+    this.inspection.marks.problem = repairStory(this.mesh, incident, kind);
     this.say(incident.message);
     this.drawSelection();
   }

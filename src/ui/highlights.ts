@@ -3,7 +3,7 @@
  * `twin`, `face` and `origin` together; for a vertex its outgoing halfedge and one-ring; for a face
  * its loop of halfedges. Pure: it returns a description the highlight layer draws.
  */
-import { faceCentroid, type HalfedgeMesh, type Phase, type RepairIncident } from '../core/index.js';
+import { faceCentroid, type HalfedgeMesh, type Phase } from '../core/index.js';
 import { colors, hollowRoles, phaseColors } from './colors.js';
 import type { Convention } from './records.js';
 import { elementName, type Selection } from './selection.js';
@@ -168,25 +168,6 @@ export function labelPoint(mesh: HalfedgeMesh, s: Selection): Point {
   const a = mesh.position(mesh.origin(mesh.edgeHalfedge(s.id)));
   const b = mesh.position(mesh.origin(mesh.twin(mesh.edgeHalfedge(s.id))));
   return [(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2];
-}
-
-/**
- * Where the builder had to repair the file: every vertex and face of an incident, in the problem
- * colour, with a badge naming the repair.
- */
-export function problemHighlight(mesh: HalfedgeMesh, incident: RepairIncident, kind: string): HighlightSpec {
-  const spec = emptyHighlight();
-  for (const v of incident.vertices ?? []) {
-    if (v >= mesh.vertexSlots || mesh.vDeleted[v]) continue;
-    spec.vertices.push({ id: v, color: colors.problem });
-    spec.labels.push({ text: `${kind} v${v}`, at: mesh.position(v) as Point, color: colors.problem });
-  }
-  for (const f of incident.faces ?? []) {
-    if (f >= mesh.faceSlots || mesh.fDeleted[f]) continue;
-    spec.faces.push({ id: f, color: colors.problem });
-    spec.labels.push({ text: `${kind} f${f}`, at: faceCentroid(mesh, f) as Point, color: colors.problem });
-  }
-  return spec;
 }
 
 /** Two highlights drawn as one. */

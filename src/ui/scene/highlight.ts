@@ -29,7 +29,8 @@ export interface HighlightSpec {
   faces: Array<{ id: number; color: string }>;
   vertices: Array<{ id: number; color: string }>;
   edges: Array<{ id: number; color: string }>;
-  labels: Array<{ text: string; at: [number, number, number]; color: string }>;
+  /** `sentence`: words rather than an id, which may wrap onto a second line (see repair-story.ts). */
+  labels: Array<{ text: string; at: [number, number, number]; color: string; sentence?: boolean }>;
 }
 
 export function emptyHighlight(): HighlightSpec {
@@ -131,11 +132,11 @@ export class HighlightLayer {
       dots.renderOrder = 3;
       this.group.add(withNoRaycast(dots));
     }
-    for (const { text, at, color } of spec.labels) {
+    for (const { text, at, color, sentence } of spec.labels) {
       // the anchor is what the label renderer positions; the tag inside may be nudged off others
       const anchor = document.createElement('div');
       const tag = document.createElement('span');
-      tag.className = 'label';
+      tag.className = sentence ? 'label sentence' : 'label';
       tag.textContent = text; // text, never HTML
       tag.style.borderColor = color;
       anchor.append(tag);
