@@ -3,7 +3,7 @@
  * (camera, selection, the path walked, which table is open). Every change to the mesh is asked of
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
-import { Vector3 } from 'three';
+import { type Box3, Vector3 } from 'three';
 import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
 import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
@@ -11,7 +11,7 @@ import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import type { StudentVerb, VerbArguments } from '../workers/protocol.js';
 import { byId, capitalized, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, quizHighlight } from './highlights.js';
-import { boundaryLoopList, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
+import { boundaryLoopList, incidentBounds, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
 import { incidentTarget, renderFileInfo } from './panels/file-info.js';
 import { renderHelp } from './panels/help.js';
@@ -104,6 +104,8 @@ export class App {
   private practicePanel: Promise<PracticePanel> | null = null;
   /** Whether the camera was last framed on the whole mesh (not on a selection): see `show`. */
   private framedWhole = false;
+  /** Frames again what was framed last, the same way (presentation mode changes the view's size). */
+  private frameAgain: () => void = () => this.frameMesh();
   /** The phase marks last worked out, and the snapshot they are of (see `phaseMarks`). */
   private marked: { snapshot: Snapshot; marks: HighlightSpec } | null = null;
   /** The boundary loops last listed, and the snapshot they are of (see `boundaryLoops`). */
@@ -417,6 +419,7 @@ export class App {
     const { box, radius } = meshBounds(this.mesh);
     this.viewer.frame(box, this.viewNormal(), radius);
     this.framedWhole = true;
+    this.frameAgain = () => this.frameMesh();
   }
 
   /**
@@ -435,8 +438,14 @@ export class App {
     // close up, an element facing away would be seen from inside the surface: look at its front
     const facing = selectionFacing(mesh, s);
     const direction = this.viewer.camera.position.clone().sub(this.viewer.controls.target);
-    this.viewer.frame(box, this.viewNormal(), radius, facing && facing.dot(direction) < 0 ? facing : undefined);
+    this.framePart(box, radius, facing && facing.dot(direction) < 0 ? facing : undefined);
+  }
+
+  /** Frames a part of the mesh (a selection, a boundary loop, a repair), and remembers how. */
+  private framePart(box: Box3, radius: number, from?: Vector3): void {
+    this.viewer.frame(box, this.viewNormal(), radius, from);
     this.framedWhole = false;
+    this.frameAgain = () => this.framePart(box, radius, from);
   }
 
   /**
@@ -463,8 +472,7 @@ export class App {
     // said first: framing keeps the loop clear of the status line as it will read
     this.say(`Boundary loop ${index + 1}: ${loop.length} edge${loop.length === 1 ? '' : 's'}, from h${loop.halfedge}; walk next to go round it.`);
     const { box, radius, facing } = loopBounds(this.mesh, loop.halfedge);
-    this.viewer.frame(box, this.viewNormal(), radius, facing ?? undefined);
-    this.framedWhole = false;
+    this.framePart(box, radius, facing ?? undefined);
     return true;
   }
 
@@ -491,8 +499,8 @@ export class App {
     this.showTables(!on);
     void this.detail.refresh();
     this.drawSelection();
-    // the view changed size with the layout: fit the mesh to it once the layout has settled
-    requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
+    // the view changed size with the layout: fit what was framed to it once the layout has settled
+    requestAnimationFrame(() => requestAnimationFrame(() => this.frameAgain()));
     // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
     if (on && !document.fullscreenElement) this.frame.requestFullscreen?.().catch(() => {});
     if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
@@ -597,14 +605,13 @@ export class App {
 
   /**
    * A file that had to be repaired says so as it opens, in the status line, with the way to the
-   * list; and its first culprit is selected and framed, seen from its front, so it is not missed.
+   * list; and its first culprit is told over the view and framed (see `showProblem`), so it is not missed.
    */
   private announceRepairs(name: string, repairs: Repair[]): void {
     for (const repair of repairs) {
       const incident = repair.incidents.find((i) => incidentTarget(i) !== null);
       if (!incident) continue;
       this.showProblem(incident, repair.kind, incidentTarget(incident)!);
-      this.frameSelection();
       break;
     }
     const more = repairs.length > 1 ? ` (and ${repairs.length - 1} more kind${repairs.length > 2 ? 's' : ''} of repair)` : '';
@@ -644,13 +651,19 @@ export class App {
     return onScreen && (!facing || facing.dot(toCamera) > 0.3);
   }
 
-  /** Selects the first element of a repair and tells the repair over the view (see repair-story.ts). */
+  /**
+   * Selects the first element of a repair, tells the repair over the view (see repair-story.ts)
+   * and frames all of its elements, seen from where none is edge-on.
+   */
   showProblem(incident: RepairIncident, kind: RepairKind, first: Selection): void {
-    if (!this.mesh) return;
+    const mesh = this.mesh;
+    if (!mesh) return;
     this.select(first);
-    this.inspection.marks.problem = repairStory(this.mesh, incident, kind);
+    this.inspection.marks.problem = repairStory(mesh, incident, kind);
     this.say(incident.message);
     this.drawSelection();
+    const { box, radius, facing } = incidentBounds(mesh, incident, kind, this.viewer.camera.position.clone().sub(this.viewer.controls.target));
+    this.framePart(box, radius, facing ?? undefined);
   }
 
   get seamsShown(): boolean {

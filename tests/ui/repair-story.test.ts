@@ -1,12 +1,13 @@
 /**
  * A repair told over the view: one label in words per element (what the file had, what the repair
- * made), in two colours.
+ * made), in two colours, and a camera that sees every face of it, none edge-on.
  */
 import { readFileSync } from 'node:fs';
 import { Vector3 } from 'three';
 import { describe, expect, it } from 'vitest';
-import { buildMesh, moebiusStrip, readMesh, type RepairKind, soupFromArrays } from '../../src/index.js';
+import { buildMesh, faceNormal, moebiusStrip, readMesh, type RepairKind, soupFromArrays } from '../../src/index.js';
 import { colors, phaseColors } from '../../src/ui/colors.js';
+import { incidentBounds } from '../../src/ui/framing.js';
 import { repairStory } from '../../src/ui/repair-story.js';
 
 /** The sample a lecturer opens: three faces on one edge, and two fans pinched at vertex 0. */
@@ -68,5 +69,45 @@ describe('the story of a repair', () => {
     const incident = incidentOf(report, 'non-manifold-edge');
     mesh.fDeleted[4] = 1;
     expect(texts(repairStory(mesh, incident, 'non-manifold-edge'))).toEqual(['file edge 6–5 had 3 faces: f2 and f3 keep it']);
+  });
+});
+
+describe('the view of a repair', () => {
+  const from = new Vector3(0.55, 0.45, 1).normalize();
+  /** How far from edge-on each face is seen (1: face on). */
+  const seen = (mesh: ReturnType<typeof buildMesh>['mesh'], faces: number[], facing: Vector3) =>
+    faces.map((f) => Math.abs(new Vector3(...faceNormal(mesh, f)).dot(facing)));
+
+  it('sees the three faces of an edge from between them, none of them edge-on', () => {
+    const { mesh, report } = nonManifoldSample();
+    const { facing, box, radius } = incidentBounds(mesh, incidentOf(report, 'non-manifold-edge'), 'non-manifold-edge', from);
+    // three pages 120° apart: no way sees all three better than 30° off edge-on; this one nearly does
+    for (const cosine of seen(mesh, [2, 3, 4], facing!)) expect(cosine).toBeGreaterThan(Math.sin((25 * Math.PI) / 180));
+    // from the camera's side, and not along the edge, where the pages would be lines
+    expect(facing!.dot(from)).toBeGreaterThan(0);
+    expect(Math.abs(facing!.z)).toBeLessThan(0.7);
+    // the whole book, and nothing of the pinch far below it
+    expect(box.min.y).toBeCloseTo(1.14);
+    expect(radius).toBeLessThan(2);
+  });
+
+  it('sees the fans of a pinched vertex face on', () => {
+    const { mesh, report } = nonManifoldSample();
+    const { facing, box } = incidentBounds(mesh, incidentOf(report, 'non-manifold-vertex'), 'non-manifold-vertex', from);
+    expect(facing!.toArray()).toEqual([0, 0, 1]);
+    expect(box.max.y).toBeCloseTo(0.5);
+  });
+
+  it('sees two tetrahedra tip to tip from the side, where both fans of the shared vertex show', () => {
+    const corners = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1];
+    const first = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    // the second outward, then inside out (so both fans face the same way): the view is the same
+    for (const second of [[[0, 4, 5], [0, 6, 4], [0, 5, 6], [4, 6, 5]], [[0, 5, 4], [0, 4, 6], [0, 6, 5], [4, 5, 6]]]) {
+      const { mesh, report } = buildMesh(soupFromArrays(corners, [...first, ...second]));
+      const { facing } = incidentBounds(mesh, incidentOf(report, 'non-manifold-vertex'), 'non-manifold-vertex', from);
+      // the line through the two fans runs along (1, 1, 1): looked at square to it
+      expect(facing!.dot(new Vector3(1, 1, 1).normalize())).toBeCloseTo(0);
+      expect(facing!.dot(from)).toBeGreaterThan(0);
+    }
   });
 });
