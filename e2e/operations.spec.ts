@@ -4,6 +4,41 @@ import { cube, mergeSoups, torus, writeSoup } from '../src/index.js';
 import { clickCanvas, openApp } from './helpers.js';
 
 const stats = (page: Page) => page.evaluate(() => window.halfedgeLab.state().stats!);
+
+type Box = { left: number; top: number; right: number; bottom: number };
+const area = (r: Box) => Math.max(0, r.right - r.left) * Math.max(0, r.bottom - r.top);
+const overlap = (a: Box, b: Box) =>
+  area({ left: Math.max(a.left, b.left), top: Math.max(a.top, b.top), right: Math.min(a.right, b.right), bottom: Math.min(a.bottom, b.bottom) });
+
+/**
+ * The view tells a repair: exactly these labels, in words; each inside the view, none over another
+ * by more than a sliver (4 % of the smaller); and each of `faces` (corners by name) seen on screen
+ * at no less than a quarter of the largest one's size, so none is edge-on.
+ */
+async function expectStory(page: Page, words: string[], faces: string[][]): Promise<void> {
+  const labels = page.locator('#viewport .label');
+  await expect(labels).toHaveText(words);
+  await expect(page.locator('#viewport')).not.toContainText(/non-manifold-(edge|vertex)/);
+  const boxes = await labels.evaluateAll((tags) => tags.map((tag) => tag.getBoundingClientRect().toJSON() as Box));
+  const view = await page.locator('#viewport').evaluate((node) => node.getBoundingClientRect().toJSON() as Box);
+  for (const [i, r] of boxes.entries()) {
+    expect(r.left >= view.left && r.right <= view.right && r.top >= view.top && r.bottom <= view.bottom, `label ${i} inside the view`).toBe(true);
+  }
+  for (let i = 0; i < boxes.length; i++) {
+    for (let j = i + 1; j < boxes.length; j++) {
+      expect(overlap(boxes[i]!, boxes[j]!), `labels ${i} and ${j}`).toBeLessThanOrEqual(0.04 * Math.min(area(boxes[i]!), area(boxes[j]!)));
+    }
+  }
+  const sizes = await page.evaluate(
+    (corners) =>
+      corners.map(([a, b, c]) => {
+        const [p, q, r] = [a, b, c].map((v) => window.halfedgeLab.screenPosition(v!));
+        return Math.abs((q!.x - p!.x) * (r!.y - p!.y) - (r!.x - p!.x) * (q!.y - p!.y)) / 2;
+      }),
+    faces,
+  );
+  for (const [i, size] of sizes.entries()) expect(size, `face ${faces[i]!.join(' ')} seen edge-on`).toBeGreaterThan(0.25 * Math.max(...sizes));
+}
 const valid = (page: Page) => page.locator('#hud [data-valid]').getAttribute('data-valid');
 /** Where the page draws each element, on the canvas. */
 const drawnAt = (page: Page, names: string[]) => page.evaluate((names) => names.map((name) => window.halfedgeLab.screenPosition(name)), names);
@@ -51,9 +86,46 @@ test.describe('stepping operations, history and export', () => {
     const selection = await page.evaluate(() => window.halfedgeLab.state().selection);
     expect(selection).toMatch(/^v\d+$/);
     await expect(page.locator('#status')).toContainText('vertex 0 joined 2 fans');
-    await expect(page.locator('.labels')).toContainText('non-manifold-vertex v0');
+    // told in words, fan by fan: the file's vertex, and the mesh's copies
+    await expect(page.locator('.labels')).toContainText('file vertex 0 joined 2 fans: this one keeps v0');
+    await expect(page.locator('.labels')).toContainText('this fan got its own copy, v12');
     await page.screenshot({ path: testInfo.outputPath('repairs.png') });
   });
+
+  // framed on its culprit, the sample was a pile of six overlapping labels with raw slugs
+  // ("non-manifold-edge f3"), clipped at the top of the view, and the pinched fan seen edge-on
+  for (const [width, height] of [
+    [1280, 720],
+    [1024, 768],
+  ] as const) {
+    for (const presentation of [false, true]) {
+      test(`at ${width} × ${height}${presentation ? ' in presentation mode' : ''}, tells each repair of the non-manifold sample in words, labels apart and in view, faces not edge-on`, async ({
+        page,
+      }, testInfo) => {
+        await page.setViewportSize({ width, height });
+        await openApp(page, 'non-manifold.obj');
+        if (presentation) await page.keyboard.press('m');
+        const name = `${width}x${height}${presentation ? '-presentation' : ''}`;
+        await page.waitForTimeout(700);
+        await expectStory(page, ['file edge 6–5 had 3 faces: f2 and f3 keep it', 'f4 detached, with its own copies v10 and v11'], [
+          ['v5', 'v7', 'v6'],
+          ['v5', 'v6', 'v8'],
+          ['v10', 'v11', 'v9'],
+        ]);
+        await page.screenshot({ path: testInfo.outputPath(`story-edge-${name}.png`) });
+
+        await page.getByRole('tab', { name: 'File' }).click();
+        await page.locator('[data-repair="non-manifold-vertex"] summary').click();
+        await page.getByRole('button', { name: /^Show: vertex 0 joined 2 fans/ }).click();
+        await page.waitForTimeout(700);
+        await expectStory(page, ['file vertex 0 joined 2 fans: this one keeps v0', 'this fan got its own copy, v12'], [
+          ['v0', 'v1', 'v2'],
+          ['v12', 'v3', 'v4'],
+        ]);
+        await page.screenshot({ path: testInfo.outputPath(`story-pinch-${name}.png`) });
+      });
+    }
+  }
 
   // two tetrahedra sharing a vertex opened with "Opened …" and a green check, V = 8 where the file
   // has 7, and the split vertex hidden behind a face: the repair was easy to miss

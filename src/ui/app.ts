@@ -3,15 +3,15 @@
  * (camera, selection, the path walked, which table is open). Every change to the mesh is asked of
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
-import { Vector3 } from 'three';
-import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident } from '../core/index.js';
+import { type Box3, Vector3 } from 'three';
+import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
 import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import { PICK_IN_WORKER_ABOVE, type RenderPatch, type StudentVerb, type VerbArguments } from '../workers/protocol.js';
 import { byId, capitalized, el } from './dom.js';
-import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, problemHighlight, quizHighlight } from './highlights.js';
-import { boundaryLoopList, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
+import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, quizHighlight } from './highlights.js';
+import { boundaryLoopList, incidentBounds, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
 import { incidentTarget, renderFileInfo } from './panels/file-info.js';
 import { renderHelp } from './panels/help.js';
@@ -36,6 +36,7 @@ import { Viewer } from './scene/viewer.js';
 import { Opening } from './opening.js';
 import { type Tab, tabs, wireControls } from './controls.js';
 import { Inspection } from './inspection.js';
+import { repairStory } from './repair-story.js';
 import { ViewDetail } from './view-detail.js';
 import { cutPlaneOnShow, explodedMesh, explodedRender, explodeOffsets } from './explode.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
@@ -118,6 +119,8 @@ export class App {
   private practicePanel: Promise<PracticePanel> | null = null;
   /** Whether the camera was last framed on the whole mesh (not on a selection): see `show`. */
   private framedWhole = false;
+  /** Frames again what was framed last, the same way (presentation mode changes the view's size). */
+  private frameAgain: () => void = () => this.frameMesh();
   /** The phase marks last worked out, and the snapshot they are of (see `phaseMarks`). */
   private marked: { snapshot: Snapshot; marks: HighlightSpec } | null = null;
   /** The boundary loops last listed, and the snapshot they are of (see `boundaryLoops`). */
@@ -501,6 +504,7 @@ export class App {
     const { box, radius } = meshBounds(this.drawn);
     this.viewer.frame(box, this.viewNormal(), radius);
     this.framedWhole = true;
+    this.frameAgain = () => this.frameMesh();
   }
 
   /**
@@ -519,8 +523,14 @@ export class App {
     // close up, an element facing away would be seen from inside the surface: look at its front
     const facing = selectionFacing(mesh, s);
     const direction = this.viewer.camera.position.clone().sub(this.viewer.controls.target);
-    this.viewer.frame(box, this.viewNormal(), radius, facing && facing.dot(direction) < 0 ? facing : undefined);
+    this.framePart(box, radius, facing && facing.dot(direction) < 0 ? facing : undefined);
+  }
+
+  /** Frames a part of the mesh (a selection, a boundary loop, a repair), and remembers how. */
+  private framePart(box: Box3, radius: number, from?: Vector3): void {
+    this.viewer.frame(box, this.viewNormal(), radius, from);
     this.framedWhole = false;
+    this.frameAgain = () => this.framePart(box, radius, from);
   }
 
   /**
@@ -547,8 +557,7 @@ export class App {
     // said first: framing keeps the loop clear of the status line as it will read
     this.say(`Boundary loop ${index + 1}: ${loop.length} edge${loop.length === 1 ? '' : 's'}, from h${loop.halfedge}; walk next to go round it.`);
     const { box, radius, facing } = loopBounds(this.drawn, loop.halfedge);
-    this.viewer.frame(box, this.viewNormal(), radius, facing ?? undefined);
-    this.framedWhole = false;
+    this.framePart(box, radius, facing ?? undefined);
     return true;
   }
 
@@ -576,8 +585,8 @@ export class App {
     void this.detail.refresh();
     this.drawSelection();
     this.drawPanels();
-    // the view changed size with the layout: fit the mesh to it once the layout has settled
-    requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
+    // the view changed size with the layout: fit what was framed to it once the layout has settled
+    requestAnimationFrame(() => requestAnimationFrame(() => this.frameAgain()));
     // full screen needs a user gesture and may be refused (a test browser, an iframe): fine either way
     if (on && !document.fullscreenElement) this.frame.requestFullscreen?.().catch(() => {});
     if (!on && document.fullscreenElement) document.exitFullscreen().catch(() => {});
@@ -665,11 +674,11 @@ export class App {
       this.byId(`pane-${tab}`).hidden = tab !== name;
     }
     // Practice widens the side column, for the code beside the task and what a run wrote: the
-    // view narrows, and a mesh framed whole is framed again once the layout has settled
+    // view narrows, and what was framed is framed again once the layout has settled
     const practising = name === 'practice';
     if (this.frame.classList.contains('practising') === practising) return;
     this.frame.classList.toggle('practising', practising);
-    if (this.framedWhole) requestAnimationFrame(() => requestAnimationFrame(() => this.frameMesh()));
+    requestAnimationFrame(() => requestAnimationFrame(() => this.frameAgain()));
   }
 
   // -----------------------------------------------------------------------------------------------
@@ -689,14 +698,13 @@ export class App {
 
   /**
    * A file that had to be repaired says so as it opens, in the status line, with the way to the
-   * list; and its first culprit is selected and framed, seen from its front, so it is not missed.
+   * list; and its first culprit is told over the view and framed (see `showProblem`), so it is not missed.
    */
   private announceRepairs(name: string, repairs: Repair[]): void {
     for (const repair of repairs) {
       const incident = repair.incidents.find((i) => incidentTarget(i) !== null);
       if (!incident) continue;
       this.showProblem(incident, repair.kind, incidentTarget(incident)!);
-      this.frameSelection();
       break;
     }
     const more = repairs.length > 1 ? ` (and ${repairs.length - 1} more kind${repairs.length > 2 ? 's' : ''} of repair)` : '';
@@ -736,13 +744,19 @@ export class App {
     return onScreen && (!facing || facing.dot(toCamera) > 0.3);
   }
 
-  /** Selects the first element of a repair and marks all of its elements as problems. */
-  showProblem(incident: RepairIncident, kind: string, first: Selection): void {
-    if (!this.mesh) return;
+  /**
+   * Selects the first element of a repair, tells the repair over the view (see repair-story.ts)
+   * and frames all of its elements, seen from where none is edge-on.
+   */
+  showProblem(incident: RepairIncident, kind: RepairKind, first: Selection): void {
+    const mesh = this.drawn;
+    if (!mesh) return;
     this.select(first);
-    this.inspection.marks.problem = problemHighlight(this.mesh, incident, kind);
+    this.inspection.marks.problem = repairStory(mesh, incident, kind);
     this.say(incident.message);
     this.drawSelection();
+    const { box, radius, facing } = incidentBounds(mesh, incident, kind, this.viewer.camera.position.clone().sub(this.viewer.controls.target));
+    this.framePart(box, radius, facing ?? undefined);
   }
 
   get seamsShown(): boolean {

@@ -3,7 +3,7 @@
  * `twin`, `face` and `origin` together; for a vertex its outgoing halfedge and one-ring; for a face
  * its loop of halfedges. Pure: it returns a description the highlight layer draws.
  */
-import { type HalfedgeMesh, type Phase, type RepairIncident } from '../core/index.js';
+import { type HalfedgeMesh, type Phase } from '../core/index.js';
 import { colors, hollowRoles, phaseColors } from './colors.js';
 import type { Convention } from './records.js';
 import { elementName, type Selection } from './selection.js';
@@ -140,25 +140,6 @@ export function quizHighlight(path: Selection[], picked: Selection | null, right
     if (picked.kind === 'vertex') spec.vertices.push({ id: picked.id, color });
     if (picked.kind === 'face') spec.faces.push({ id: picked.id, color });
     spec.labels.push({ text: `your pick ${elementName(picked)}`, on: picked, color });
-  }
-  return spec;
-}
-
-/**
- * Where the builder had to repair the file: every vertex and face of an incident, in the problem
- * colour, with a badge naming the repair.
- */
-export function problemHighlight(mesh: HalfedgeMesh, incident: RepairIncident, kind: string): HighlightSpec {
-  const spec = emptyHighlight();
-  for (const v of incident.vertices ?? []) {
-    if (v >= mesh.vertexSlots || mesh.vDeleted[v]) continue;
-    spec.vertices.push({ id: v, color: colors.problem });
-    spec.labels.push({ text: `${kind} v${v}`, on: { kind: 'vertex', id: v }, color: colors.problem });
-  }
-  for (const f of incident.faces ?? []) {
-    if (f >= mesh.faceSlots || mesh.fDeleted[f]) continue;
-    spec.faces.push({ id: f, color: colors.problem });
-    spec.labels.push({ text: `${kind} f${f}`, on: { kind: 'face', id: f }, color: colors.problem });
   }
   return spec;
 }

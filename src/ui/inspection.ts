@@ -77,11 +77,17 @@ export class Inspection {
     this.marks.problem = this.marks.practice = this.marks.seams = null;
   }
 
-  /** What to highlight: a quiz's path or a traversal alone, else the selection under the other marks. */
+  /**
+   * What to highlight: a quiz's path or a traversal alone, else the selection under the other marks.
+   * A repair's story (see repair-story.ts) is the whole picture at the element it selected: that
+   * element's own marks (its id, its halfedge, its fan in the legend's colours) would tell a second
+   * story over it. They come back as the walk leaves it.
+   */
   highlight(mesh: HalfedgeMesh): HighlightSpec {
     const { quiz, traversal, problem, seams, practice } = this.marks;
     if (quiz ?? traversal) return (quiz ?? traversal)!;
-    const selected = this.selection ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight();
+    const told = problem !== null && this.path.length === 1;
+    const selected = this.selection && !told ? selectionHighlight(mesh, this.selection, this.convention) : emptyHighlight();
     return [seams, problem, practice].filter((spec) => spec !== null).reduce(combineHighlights, selected);
   }
 

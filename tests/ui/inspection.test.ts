@@ -62,6 +62,20 @@ describe('Inspection', () => {
     expect(view.path).toEqual([]);
   });
 
+  it("draws a repair's story alone at the element it selected, and the selection again once the walk leaves it", () => {
+    const { mesh } = buildMesh(torus(6, 5));
+    const view = new Inspection();
+    view.select(mesh, { kind: 'vertex', id: 4 });
+    const story = { ...emptyHighlight(), labels: [{ text: 'file vertex 4 joined 2 fans: this one keeps v4', on: { kind: 'vertex' as const, id: 4 }, color: '#D55E00' }] };
+    view.marks.problem = story;
+    expect(view.highlight(mesh)).toEqual(story);
+    view.walk(mesh, 'halfedge');
+    expect(view.highlight(mesh).labels.map((label) => label.text)).toContain(story.labels[0]!.text);
+    expect(view.highlight(mesh).halfedges.length).toBeGreaterThan(0);
+    view.back();
+    expect(view.highlight(mesh)).toEqual(story);
+  });
+
   it("shows a quiz's path or a traversal alone, else the selection under the marks", () => {
     const { mesh } = buildMesh(torus(6, 5));
     const view = new Inspection();

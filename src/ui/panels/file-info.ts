@@ -3,14 +3,14 @@
  * incident selects the element concerned, so a student sees *where* the mesh is non-manifold.
  * All of it is file text or built from it, and goes in as text only.
  */
-import type { BuildReport, RepairIncident } from '../../core/index.js';
+import type { BuildReport, RepairIncident, RepairKind } from '../../core/index.js';
 import type { FileInfo } from '../../workers/protocol.js';
 import { capitalized, el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
 
 /** What the File tab can do in the view: show a repair's incident, show or hide the seams. */
 export interface FileInfoActions {
-  showProblem: (incident: RepairIncident, kind: string, first: Selection) => void;
+  showProblem: (incident: RepairIncident, kind: RepairKind, first: Selection) => void;
   toggleSeams: () => void;
   seamsShown: boolean;
   /** Opens the file again welding within a distance; null when the page does not have the file (a sample, a link). */

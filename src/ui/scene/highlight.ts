@@ -19,7 +19,7 @@ import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
 import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
 import { CSS2DObject } from 'three/examples/jsm/renderers/CSS2DRenderer.js';
-import type { HalfedgeMesh } from '../../core/index.js';
+import { faceVertices, type HalfedgeMesh } from '../../core/index.js';
 import { newPlacement, placeArrow } from './arrow-placement.js';
 import { arrowShape, writeArrowMatrix } from './arrows.js';
 import { labelPoint } from './label-point.js';
@@ -31,8 +31,11 @@ export interface HighlightSpec {
   faces: Array<{ id: number; color: string }>;
   vertices: Array<{ id: number; color: string }>;
   edges: Array<{ id: number; color: string }>;
-  /** Each on an element, which the layer finds on the mesh it draws (see label-point.ts). */
-  labels: Array<{ text: string; on: Selection; color: string }>;
+  /**
+   * Each on an element, which the layer finds on the mesh it draws (see label-point.ts);
+   * `sentence`: words rather than an id, which may wrap onto a second line (see repair-story.ts).
+   */
+  labels: Array<{ text: string; on: Selection; color: string; sentence?: boolean }>;
 }
 
 export function emptyHighlight(): HighlightSpec {
@@ -61,6 +64,14 @@ export class HighlightLayer {
     this.clear();
     const transparent = this.opacity < 1;
     if (spec.faces.length) this.group.add(this.faceTint(mesh, spec.faces));
+    // labels keep off the tinted faces as well: their centres, and halfway to each corner
+    if (spec.labels.length > 0 && spec.faces.length <= MAX_MARKED) {
+      for (const { id } of spec.faces) {
+        const corners = [...faceVertices(mesh, id)].map((v) => mesh.position(v));
+        const centre = [0, 1, 2].map((k) => corners.reduce((sum, p) => sum + p[k], 0) / corners.length);
+        this.group.add(avoidMarker(centre, centre, 0), ...corners.map((corner) => avoidMarker(centre, corner, 0.5)));
+      }
+    }
     if (spec.halfedges.length) {
       const arrows = new InstancedMesh(
         shape,
@@ -76,7 +87,7 @@ export class HighlightLayer {
       );
       const placement = newPlacement();
       // where labels are drawn too, points along each arrow tell them where not to go
-      const markArrows = spec.labels.length > 0 && spec.halfedges.length <= MAX_MARKED_ARROWS;
+      const markArrows = spec.labels.length > 0 && spec.halfedges.length <= MAX_MARKED;
       spec.halfedges.forEach(({ id, color }, i) => {
         const arrow = placeArrow(mesh, id, placement, scale);
         writeArrowMatrix(arrow, arrows.instanceMatrix.array, 16 * i, this.widthScale);
@@ -110,10 +121,14 @@ export class HighlightLayer {
     if (spec.vertices.length) {
       const points: number[] = [];
       const dotColors: number[] = [];
+      // labels keep off the dots too, as off the arrows
+      const markDots = spec.labels.length > 0 && spec.vertices.length <= MAX_MARKED;
       for (const { id, color } of spec.vertices) {
         const c = new Color(color);
-        points.push(...mesh.position(id));
+        const at = mesh.position(id);
+        points.push(...at);
         dotColors.push(c.r, c.g, c.b);
+        if (markDots) this.group.add(avoidMarker(at, at, 0));
       }
       const dots = new Points(
         geometry(points, dotColors),
@@ -122,11 +137,11 @@ export class HighlightLayer {
       dots.renderOrder = 3;
       this.group.add(withNoRaycast(dots));
     }
-    for (const { text, on, color } of spec.labels) {
+    for (const { text, on, color, sentence } of spec.labels) {
       // the anchor is what the label renderer positions; the tag inside may be nudged off others
       const anchor = document.createElement('div');
       const tag = document.createElement('span');
-      tag.className = 'label';
+      tag.className = sentence ? 'label sentence' : 'label';
       tag.textContent = text; // text, never HTML
       tag.style.borderColor = color;
       anchor.append(tag);
@@ -230,12 +245,12 @@ function roundDot(): CanvasTexture {
   return new CanvasTexture(canvas);
 }
 
-/** Highlights with more arrows than this (a phase's thousands) have no labels to keep off them. */
-const MAX_MARKED_ARROWS = 40;
+/** Highlights with more arrows (or dots, or faces) than this (a phase's thousands) have no labels to keep off them. */
+const MAX_MARKED = 40;
 /** Where along an arrow (from its tail, 0, to its tip, 1) labels are kept off. */
 const ARROW_MARKS = [0, 0.25, 0.5, 0.75, 1];
 
-/** An empty element at a point of an arrow, which the label placement keeps labels off. */
+/** An empty element at a point of an arrow (or at a dot: `start` = `end`), which the label placement keeps labels off. */
 function avoidMarker(start: ArrayLike<number>, end: ArrayLike<number>, t: number): CSS2DObject {
   const marker = document.createElement('div');
   marker.className = 'label-avoid';

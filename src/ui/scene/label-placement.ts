@@ -4,17 +4,21 @@
  * A label is anchored at its element (the middle of an arrow, a vertex, a face's centre), and
  * left there it covers the very arrow it names. So each label is moved beside its anchor: the
  * first of a ring of places around it (right, left, above, below, then the diagonals, then further
- * out) where it covers no anchor of any label and no point marked along a highlighted arrow
- * (`.label-avoid`, from the tail to the tip), no label placed
+ * out) where it covers no anchor of any label and no point a highlight marks (`.label-avoid`:
+ * along an arrow from its tail to its tip, on a dot, across a tinted face), no label placed
  * before it, and no overlay of the view (the legend, the counts, the status line), and stays
  * inside the view. A thin line in the label's colour leads back to the anchor. When no place is
  * free, the label takes the place that covers least.
  */
 
+import type { Rect } from './clear-spot.js';
+
+type Point = { x: number; y: number };
+
 /** Above this many labels (every id shown), they stay where they are: too many to place. */
 const MAX_PLACED_LABELS = 40;
 /** Gaps (CSS pixels) tried between a label and its anchor, nearest first. */
-const GAPS = [8, 24, 44, 70];
+const GAPS = [8, 24, 44, 70, 110, 160];
 /** Directions tried around the anchor, as unit steps in x and y (screen y down). */
 const DIRECTIONS: Array<[number, number]> = [
   [1, 0],
@@ -40,7 +44,6 @@ export function placeLabels(root: HTMLElement, obstacles: DOMRect[]): void {
     leaderOf(tag).hidden = true;
   }
   if (tags.length > MAX_PLACED_LABELS) return;
-  const bounds = root.getBoundingClientRect();
   const rects = tags.map((tag) => tag.getBoundingClientRect());
   // the points to keep clear: each label's own anchor, and the points marked along the arrows
   const anchors = rects.map((r) => ({ x: r.left + r.width / 2, y: r.top + r.height / 2 }));
@@ -48,53 +51,70 @@ export function placeLabels(root: HTMLElement, obstacles: DOMRect[]): void {
     const r = marker.getBoundingClientRect();
     anchors.push({ x: r.left + r.width / 2, y: r.top + r.height / 2 });
   }
-  const placed: DOMRect[] = [...obstacles];
+  const offsets = labelOffsets(rects, anchors, obstacles, root.getBoundingClientRect());
   tags.forEach((tag, i) => {
-    const rect = rects[i];
-    const spot = freeSpot(rect, anchors, placed, bounds);
-    if (!spot) {
-      placed.push(rect);
-      return;
-    }
-    tag.style.transform = `translate(${spot.dx}px, ${spot.dy}px)`;
-    placed.push(new DOMRect(rect.x + spot.dx, rect.y + spot.dy, rect.width, rect.height));
-    drawLeader(tag, spot.dx, spot.dy, rect);
+    const { dx, dy } = offsets[i];
+    tag.style.transform = `translate(${dx}px, ${dy}px)`;
+    drawLeader(tag, dx, dy, rects[i]);
+  });
+}
+
+export interface Offset {
+  dx: number;
+  dy: number;
+}
+
+/**
+ * Where each label goes, in order: the offset of its box from where it is drawn (centred on its
+ * anchor). Pure, in screen rectangles, so that a test can give it boxes. Each box keeps inside
+ * `bounds` and off the `obstacles`, the points of `keepClear` and the boxes placed before it.
+ */
+export function labelOffsets(labels: Rect[], keepClear: Point[], obstacles: Rect[], bounds: Rect): Offset[] {
+  const placed = [...obstacles];
+  return labels.map((rect) => {
+    const { dx, dy } = freeSpot(rect, keepClear, placed, bounds);
+    placed.push(shifted(rect, dx, dy));
+    return { dx, dy };
   });
 }
 
 /**
  * The first offset of the ring around a label's anchor where it covers nothing; when every place
  * covers something, the one that covers least (another label or an overlay counts more than an
- * arrow's point); null when no place is even inside the view.
+ * arrow's point). A place that crosses the edge of the view is pushed back inside it: a label
+ * clipped at the top of the view cannot be read.
  */
-function freeSpot(
-  rect: DOMRect,
-  anchors: Array<{ x: number; y: number }>,
-  placed: DOMRect[],
-  bounds: DOMRect,
-): { dx: number; dy: number } | null {
-  let best: { dx: number; dy: number; cost: number } | null = null;
+function freeSpot(rect: Rect, anchors: Point[], placed: Rect[], bounds: Rect): Offset & { cost: number } {
+  let best: (Offset & { cost: number }) | null = null;
   for (const gap of GAPS) {
     for (const [ux, uy] of DIRECTIONS) {
-      const dx = ux * (rect.width / 2 + gap);
-      const dy = uy * (rect.height / 2 + gap);
-      const moved = new DOMRect(rect.x + dx, rect.y + dy, rect.width, rect.height);
-      const inside = moved.left >= bounds.left && moved.right <= bounds.right && moved.top >= bounds.top && moved.bottom <= bounds.bottom;
-      if (!inside) continue;
-      const cost =
-        10 * placed.filter((r) => overlaps(moved, r)).length + anchors.filter((a) => covers(moved, a.x, a.y, ANCHOR_MARGIN)).length;
-      if (cost === 0) return { dx, dy };
+      const width = rect.right - rect.left;
+      const height = rect.bottom - rect.top;
+      const dx = inside(rect.left + ux * (width / 2 + gap), width, bounds.left, bounds.right) - rect.left;
+      const dy = inside(rect.top + uy * (height / 2 + gap), height, bounds.top, bounds.bottom) - rect.top;
+      const moved = shifted(rect, dx, dy);
+      const cost = 10 * placed.filter((r) => overlaps(moved, r)).length + anchors.filter((a) => covers(moved, a.x, a.y, ANCHOR_MARGIN)).length;
+      if (cost === 0) return { dx, dy, cost };
       if (!best || cost < best.cost) best = { dx, dy, cost };
     }
   }
-  return best;
+  return best!;
 }
 
-function covers(r: DOMRect, x: number, y: number, margin: number): boolean {
+/** The start of a span of `size` from `start`, moved to lie between `low` and `high` (its start shown when it is longer). */
+function inside(start: number, size: number, low: number, high: number): number {
+  return Math.max(low, Math.min(start, high - size));
+}
+
+function shifted(r: Rect, dx: number, dy: number): Rect {
+  return { left: r.left + dx, top: r.top + dy, right: r.right + dx, bottom: r.bottom + dy };
+}
+
+function covers(r: Rect, x: number, y: number, margin: number): boolean {
   return x > r.left - margin && x < r.right + margin && y > r.top - margin && y < r.bottom + margin;
 }
 
-function overlaps(a: DOMRect, b: DOMRect): boolean {
+function overlaps(a: Rect, b: Rect): boolean {
   return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
 }
 
@@ -113,6 +133,7 @@ function leaderOf(tag: HTMLElement): HTMLElement {
 
 /** A line from the anchor point (the anchor element's centre) to the nearest point of the moved label. */
 function drawLeader(tag: HTMLElement, dx: number, dy: number, rect: DOMRect): void {
+  if (dx === 0 && dy === 0) return; // left on its anchor: nothing to lead back to
   const leader = leaderOf(tag);
   // the label's centre is (dx, dy) from the anchor: the line stops where that ray enters the label
   const length = Math.hypot(dx, dy);
