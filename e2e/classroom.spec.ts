@@ -2,7 +2,7 @@ import { expect, type Page, test } from '@playwright/test';
 import { preview } from 'vite';
 import { cube, writeSoup } from '../src/index.js';
 import { colors } from '../src/ui/colors.js';
-import { canvasPixel, clickCanvas, colourDistance, hexToRgb, onCanvas, openApp, verticesUnderOverlays } from './helpers.js';
+import { askClickable, canvasPixel, clickCanvas, colourDistance, hexToRgb, onCanvas, openApp, verticesUnderOverlays } from './helpers.js';
 
 /** Starts a stepped Loop subdivision and shows its first phase. */
 async function firstLoopPhase(page: Page): Promise<void> {
@@ -42,19 +42,6 @@ async function clickable(page: Page, kind: 'halfedge' | 'vertex' | 'face', avoid
   );
   if (!found) throw new Error(`no ${kind} can be clicked`);
   return found;
-}
-
-/** Asks until the answer lies where a click picks it (a random answer may sit under the counts panel). */
-async function askClickable(page: Page): Promise<{ answer: string; path: string[]; text: string; x: number; y: number }> {
-  for (let tries = 0; tries < 20; tries++) {
-    const question = (await page.evaluate(() => window.halfedgeLab.quiz.question()))!;
-    const kind = question.answer[0] === 'h' ? 'halfedge' : question.answer[0] === 'v' ? 'vertex' : 'face';
-    const at = await page.evaluate((name) => window.halfedgeLab.screenPosition(name), question.answer);
-    const picked = await page.evaluate(([x, y, k]) => window.halfedgeLab.pickAt(x as number, y as number, k as 'face'), [at.x, at.y, kind]);
-    if (at.visible && picked === question.answer && (await onCanvas(page, at.x, at.y))) return { ...question, x: at.x, y: at.y };
-    await page.evaluate(() => window.halfedgeLab.quiz.ask());
-  }
-  throw new Error('no question with an answer that can be clicked');
 }
 
 test.describe('the classroom', () => {

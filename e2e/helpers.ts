@@ -105,3 +105,46 @@ export async function verticesUnderOverlays(page: Page, overlayIds: string[]): P
     return under;
   }, overlayIds);
 }
+
+/**
+ * Text of the side panel that a room cannot read in presentation mode: cut by the window's edge,
+ * or below it. A box that scrolls its own long content (`.scroll-box`: the operations, the history,
+ * a pointer diff, the practice panel…) must itself be in the window, with its first lines in
+ * sight; what it scrolls away is not counted.
+ */
+export async function textOutside(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const inside = (box: DOMRect, frame: { top: number; bottom: number; left: number; right: number }) =>
+      box.top >= frame.top - 0.5 && box.bottom <= frame.bottom + 0.5 && box.left >= frame.left - 0.5 && box.right <= frame.right + 0.5;
+    const window_ = { top: 0, left: 0, bottom: window.innerHeight, right: window.innerWidth };
+    const problems: string[] = [];
+    const side = document.querySelector('.side')!;
+    for (const element of side.querySelectorAll<HTMLElement>('*')) {
+      const text = [...element.childNodes].filter((node) => node.nodeType === Node.TEXT_NODE).map((node) => node.textContent!.trim()).filter(Boolean).join(' ');
+      if (!text || !element.checkVisibility({ visibilityProperty: true }) || element.getClientRects().length === 0) continue;
+      const box = element.getBoundingClientRect();
+      if (box.width === 0 || box.height === 0) continue;
+      const scroller = element.closest<HTMLElement>('.scroll-box');
+      if (scroller) {
+        const frame = scroller.getBoundingClientRect();
+        if (!inside(frame, window_)) problems.push(`the box of “${text.slice(0, 40)}” reaches outside the window`);
+        continue;
+      }
+      if (!inside(box, window_)) problems.push(`“${text.slice(0, 60)}” at ${Math.round(box.left)},${Math.round(box.top)}–${Math.round(box.right)},${Math.round(box.bottom)}`);
+    }
+    return problems;
+  });
+}
+
+/** Asks until the answer lies where a click picks it (a random answer may sit under the counts panel). */
+export async function askClickable(page: Page): Promise<{ answer: string; path: string[]; text: string; x: number; y: number }> {
+  for (let tries = 0; tries < 20; tries++) {
+    const question = (await page.evaluate(() => window.halfedgeLab.quiz.question()))!;
+    const kind = question.answer[0] === 'h' ? 'halfedge' : question.answer[0] === 'v' ? 'vertex' : 'face';
+    const at = await page.evaluate((name) => window.halfedgeLab.screenPosition(name), question.answer);
+    const picked = await page.evaluate(([x, y, k]) => window.halfedgeLab.pickAt(x as number, y as number, k as 'face'), [at.x, at.y, kind]);
+    if (at.visible && picked === question.answer && (await onCanvas(page, at.x, at.y))) return { ...question, x: at.x, y: at.y };
+    await page.evaluate(() => window.halfedgeLab.quiz.ask());
+  }
+  throw new Error('no question with an answer that can be clicked');
+}

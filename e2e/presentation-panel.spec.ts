@@ -1,35 +1,5 @@
-import { expect, type Page, test } from '@playwright/test';
-import { openApp } from './helpers.js';
-
-/**
- * Text of the side panel that a room cannot read in presentation mode: cut by the window's edge,
- * or below it. A box that scrolls its own long content (`.scroll-box`: the operations, the history,
- * a pointer diff, the practice panel…) must itself be in the window, with its first lines in
- * sight; what it scrolls away is not counted.
- */
-async function textOutside(page: Page): Promise<string[]> {
-  return page.evaluate(() => {
-    const inside = (box: DOMRect, frame: { top: number; bottom: number; left: number; right: number }) =>
-      box.top >= frame.top - 0.5 && box.bottom <= frame.bottom + 0.5 && box.left >= frame.left - 0.5 && box.right <= frame.right + 0.5;
-    const window_ = { top: 0, left: 0, bottom: window.innerHeight, right: window.innerWidth };
-    const problems: string[] = [];
-    const side = document.querySelector('.side')!;
-    for (const element of side.querySelectorAll<HTMLElement>('*')) {
-      const text = [...element.childNodes].filter((node) => node.nodeType === Node.TEXT_NODE).map((node) => node.textContent!.trim()).filter(Boolean).join(' ');
-      if (!text || !element.checkVisibility({ visibilityProperty: true }) || element.getClientRects().length === 0) continue;
-      const box = element.getBoundingClientRect();
-      if (box.width === 0 || box.height === 0) continue;
-      const scroller = element.closest<HTMLElement>('.scroll-box');
-      if (scroller) {
-        const frame = scroller.getBoundingClientRect();
-        if (!inside(frame, window_)) problems.push(`the box of “${text.slice(0, 40)}” reaches outside the window`);
-        continue;
-      }
-      if (!inside(box, window_)) problems.push(`“${text.slice(0, 60)}” at ${Math.round(box.left)},${Math.round(box.top)}–${Math.round(box.right)},${Math.round(box.bottom)}`);
-    }
-    return problems;
-  });
-}
+import { expect, test } from '@playwright/test';
+import { openApp, textOutside } from './helpers.js';
 
 const tabs = ['Inspect', 'Operate', 'Quiz', 'Practice', 'File'] as const;
 

@@ -67,6 +67,8 @@ export class SessionClient {
 
   private session: LiveWorker<SessionApi>;
   private loader: LiveWorker<LoaderApi> | null = null;
+  /** Calls under way that may report progress (see `report`). */
+  private running = 0;
   /** The mesh and buffers of the last snapshot, which patches change in place. */
   private readonly copy = new PageCopy();
   private readonly createSessionWorker: () => Worker;
@@ -92,8 +94,8 @@ export class SessionClient {
       new WorkerStoppedError(`the loader stopped while reading ${name} (is the file larger than this browser can hold?)`),
     ));
     try {
-      const progress = proxy((event: ProgressEvent) => this.onProgress?.(event));
-      const loaded = await Promise.race([loader.remote.load(transfer(bytes, [bytes.buffer as ArrayBuffer]), name, progress, options), loader.stopped]);
+      this.running++;
+      const loaded = await Promise.race([loader.remote.load(transfer(bytes, [bytes.buffer as ArrayBuffer]), name, proxy(this.report), options), loader.stopped]).finally(() => this.running--);
       return await this.call((session) => session.adopt(transfer(loaded, transferables(loaded)), sample));
     } finally {
       if (this.loader === loader) this.loader = null;
@@ -147,11 +149,25 @@ export class SessionClient {
 
   private async call(method: (session: Remote<SessionApi>) => Promise<Snapshot>): Promise<PageSnapshot> {
     const { remote, stopped } = this.session;
-    let snapshot = await Promise.race([method(remote), stopped]);
-    // a patch of a mesh this page does not hold (a snapshot went astray): ask for the whole one
-    if (!this.copy.accepts(snapshot)) snapshot = await Promise.race([remote.snapshot(), stopped]);
-    return this.copy.take(snapshot);
+    this.running++;
+    try {
+      let snapshot = await Promise.race([method(remote), stopped]);
+      // a patch of a mesh this page does not hold (a snapshot went astray): ask for the whole one
+      if (!this.copy.accepts(snapshot)) snapshot = await Promise.race([remote.snapshot(), stopped]);
+      return this.copy.take(snapshot);
+    } finally {
+      this.running--;
+    }
   }
+
+  /**
+   * Passes a progress report on while a call is under way. Reports travel on a port of their own,
+   * so the last ones of a run may arrive after its answer: then nothing is under way, and a bar
+   * they showed would stay over the view.
+   */
+  private readonly report = (event: ProgressEvent): void => {
+    if (this.running > 0) this.onProgress?.(event);
+  };
 
   private startSession(): LiveWorker<SessionApi> {
     const session = live<SessionApi>(this.createSessionWorker(), () =>
@@ -165,7 +181,7 @@ export class SessionClient {
       if (answered) void this.recover(error.message);
       else this.onRestart?.('the editing worker could not start; reload the page to try again', null);
     });
-    void session.remote.setProgressListener(proxy((event: ProgressEvent) => this.onProgress?.(event))).then(() => (answered = true));
+    void session.remote.setProgressListener(proxy(this.report)).then(() => (answered = true));
     return session;
   }
 
