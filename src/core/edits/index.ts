@@ -11,6 +11,7 @@
  * | `canSplitFace`             | `splitFace`              | an edge between two corners of a face        |
  * | `canPokeFace`              | `pokeFace`               | a fan of triangles around the centroid       |
  * | `canMergeFaces`            | `mergeFaces`             | erase an edge, joining its two faces         |
+ * | `canMakeBoundary`          | `makeBoundary`           | a face becomes a hole (merging with holes)   |
  * | `canTriangulateFace`       | `triangulateFace`        | ear clipping (non-convex faces too)          |
  * |                            | `triangulateMesh`        | every face                                   |
  *
@@ -27,6 +28,7 @@
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
 export { halfedgeFromTo } from './find.js';
 export { canFlipEdge, flipEdge } from './flip.js';
+export { canMakeBoundary, makeBoundary } from './make-boundary.js';
 export { canMergeFaces, mergeFaces, type MergeResult } from './merge.js';
 export { canPokeFace, pokeFace } from './poke.js';
 export {
@@ -47,4 +49,10 @@ export {
   type TriangulateMeshResult,
   triangulatePolygon,
 } from './triangulate.js';
-export { type EditOptions, type EditResult, PointerWriter, type VertexEditResult } from './writer.js';
+export {
+  type EditOptions,
+  type EditResult,
+  type HalfedgeEditResult,
+  PointerWriter,
+  type VertexEditResult,
+} from './writer.js';
