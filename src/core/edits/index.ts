@@ -11,6 +11,8 @@
  * | `canSplitFace`             | `splitFace`              | an edge between two corners of a face        |
  * | `canPokeFace`              | `pokeFace`               | a fan of triangles around the centroid       |
  * | `canMergeFaces`            | `mergeFaces`             | erase an edge, joining its two faces         |
+ * | `canDissolveEdge`          | `dissolveEdge`           | the same, or a boundary edge's face → a hole |
+ * | `canDissolveVertex`        | `dissolveVertex`         | a vertex goes, its faces merge into one      |
  * | `canMakeBoundary`          | `makeBoundary`           | a face becomes a hole (merging with holes)   |
  * | `canTriangulateFace`       | `triangulateFace`        | ear clipping (non-convex faces too)          |
  * |                            | `triangulateMesh`        | every face                                   |
@@ -26,6 +28,7 @@
  *   else highlight(collapseEdge(mesh, e).changes);
  */
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
+export { canDissolveEdge, canDissolveVertex, dissolveEdge, dissolveVertex } from './dissolve.js';
 export { halfedgeFromTo } from './find.js';
 export { canFlipEdge, flipEdge } from './flip.js';
 export { canMakeBoundary, makeBoundary } from './make-boundary.js';
@@ -52,6 +55,7 @@ export {
 export {
   type EditOptions,
   type EditResult,
+  type FaceEditResult,
   type HalfedgeEditResult,
   PointerWriter,
   type VertexEditResult,
