@@ -14,6 +14,7 @@
  * | `canDissolveEdge`          | `dissolveEdge`           | the same, or a boundary edge's face → a hole |
  * | `canDissolveVertex`        | `dissolveVertex`         | a vertex goes, its faces merge into one      |
  * | `canMakeBoundary`          | `makeBoundary`           | a face becomes a hole (merging with holes)   |
+ * | `canWeldEdges`             | `weldEdges`              | two boundary edges glued into one edge       |
  * | `canTriangulateFace`       | `triangulateFace`        | ear clipping (non-convex faces too)          |
  * |                            | `triangulateMesh`        | every face                                   |
  *
@@ -52,7 +53,9 @@ export {
   type TriangulateMeshResult,
   triangulatePolygon,
 } from './triangulate.js';
+export { canWeldEdges, weldEdges } from './weld.js';
 export {
+  type EdgeEditResult,
   type EditOptions,
   type EditResult,
   type FaceEditResult,
