@@ -1,3 +1,4 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import {
   canDissolveEdge,
@@ -12,7 +13,9 @@ import {
 import { cube, fan, grid, singleTriangle, strip, tetrahedron } from '../../src/core/shapes.js';
 import { soupFromArrays } from '../../src/core/soup.js';
 import { checkedEdit, degrees, edgeBetween, meshOf, square, triangleQuadPillow } from './helpers.js';
-import { corners, expectRefused, topology } from './topology.js';
+import { corners, expectRefused, holeChiChange, nth, propertyShapes, step, topology } from './topology.js';
+
+const SEED = 4242;
 
 /** The original assignment's first dissolve-vertex case: a square of four triangles around its centre, v4. */
 function squareAroundCentre() {
@@ -61,8 +64,12 @@ describe('dissolveVertex', () => {
     const mesh = meshOf(tetrahedron());
     checkedEdit(mesh, (m) => dissolveVertex(m, 0));
     expect(topology(mesh)).toEqual({ V: 3, E: 3, F: 2, chi: 2, loops: 0, components: 1 });
-    expectRefused(mesh, canDissolveVertex(mesh, 1), /^the faces around v1 have only 2 other sides: the merged face would have 2 sides, and a face needs at least 3$/, 'dissolveVertex', (m) =>
-      dissolveVertex(m, 1),
+    expectRefused(
+      mesh,
+      canDissolveVertex(mesh, 1),
+      /^the faces around v1 have only 2 other sides: the merged face would have 2 sides, and a face needs at least 3$/,
+      'dissolveVertex',
+      (m) => dissolveVertex(m, 1),
     );
   });
 
@@ -91,8 +98,12 @@ describe('dissolveVertex', () => {
 
   it('refuses a boundary vertex with one face: nothing to merge (the original assignment’s test refuses a lone quad’s corner)', () => {
     const quad = meshOf(soupFromArrays([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0], [[0, 1, 3, 2]]));
-    expectRefused(quad, canDissolveVertex(quad, 0), 'v0 is on the boundary with one face, f0: there are no faces to merge (dissolving it would only cut the corner off)', 'dissolveVertex', (m) =>
-      dissolveVertex(m, 0),
+    expectRefused(
+      quad,
+      canDissolveVertex(quad, 0),
+      'v0 is on the boundary with one face, f0: there are no faces to merge (dissolving it would only cut the corner off)',
+      'dissolveVertex',
+      (m) => dissolveVertex(m, 0),
     );
     const mesh = meshOf(square());
     expect(canDissolveVertex(mesh, 1)).toBe('v1 is on the boundary with one face, f0: there are no faces to merge (dissolving it would only cut the corner off)');
@@ -116,8 +127,12 @@ describe('dissolveVertex', () => {
 
   it('refuses faces that share a corner away from the vertex: the merged face would pass through it twice', () => {
     const mesh = meshOf(quadPillow());
-    expectRefused(mesh, canDissolveVertex(mesh, 0), 'v2 is a corner of f1 and f0 away from v0: the merged face would pass through v2 twice', 'dissolveVertex', (m) =>
-      dissolveVertex(m, 0),
+    expectRefused(
+      mesh,
+      canDissolveVertex(mesh, 0),
+      'v2 is a corner of f1 and f0 away from v0: the merged face would pass through v2 twice',
+      'dissolveVertex',
+      (m) => dissolveVertex(m, 0),
     );
   });
 
@@ -229,7 +244,13 @@ describe('dissolveEdge', () => {
   it('refuses two faces that share another corner, as mergeFaces does', () => {
     const mesh = meshOf(triangleQuadPillow());
     const e = edgeBetween(mesh, 0, 2);
-    expectRefused(mesh, canDissolveEdge(mesh, e), /^f[02] and f[02] also share v1: the merged face would pass through v1 twice$/, 'dissolveEdge', (m) => dissolveEdge(m, e));
+    expectRefused(
+      mesh,
+      canDissolveEdge(mesh, e),
+      /^f[02] and f[02] also share v1: the merged face would pass through v1 twice$/,
+      'dissolveEdge',
+      (m) => dissolveEdge(m, e),
+    );
   });
 
   it('refuses a deleted edge and one out of range', () => {
@@ -237,5 +258,35 @@ describe('dissolveEdge', () => {
     expect(canDissolveEdge(mesh, 99)).toBe('e99 is not an edge of this mesh (ids run 0…4)');
     mesh.deleteEdge(4);
     expect(canDissolveEdge(mesh, 4)).toBe('e4 is deleted');
+  });
+});
+
+describe('dissolves on random elements', () => {
+  /** Each a vertex (true) or an edge (false), and which live one (modulo their number). */
+  const picksOfVerticesAndEdges = fc.array(fc.tuple(fc.boolean(), fc.nat()), { minLength: 1, maxLength: 12 });
+
+  it(`keep closed, open and many-piece meshes valid, χ unchanged but where a boundary edge's face joins the hole (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(fc.constantFrom(...Object.keys(propertyShapes)), picksOfVerticesAndEdges, (shape, picks) => {
+        const mesh = meshOf(propertyShapes[shape]());
+        for (const [onVertex, k] of picks) {
+          const chi = topology(mesh).chi;
+          if (onVertex) {
+            const v = nth(mesh.vertices(), k);
+            if (v === -1) continue;
+            step(mesh, canDissolveVertex(mesh, v), 'dissolveVertex', (m) => dissolveVertex(m, v));
+            expect(topology(mesh).chi).toBe(chi);
+          } else {
+            const e = nth(mesh.edges(), k);
+            if (e === -1) continue;
+            const f = mesh.heFace[2 * e] === -1 ? mesh.heFace[2 * e + 1] : mesh.heFace[2 * e + 1] === -1 ? mesh.heFace[2 * e] : -1;
+            const change = f === -1 ? 0 : holeChiChange(mesh, f);
+            const result = step(mesh, canDissolveEdge(mesh, e), 'dissolveEdge', (m) => dissolveEdge(m, e));
+            expect(topology(mesh).chi).toBe(result ? chi + change : chi);
+          }
+        }
+      }),
+      { seed: SEED, numRuns: 60 },
+    );
   });
 });

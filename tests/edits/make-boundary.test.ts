@@ -1,9 +1,12 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { canMakeBoundary, makeBoundary } from '../../src/core/edits/index.js';
 import { annulus, cube, grid, singleTriangle, tetrahedron } from '../../src/core/shapes.js';
 import { soupFromArrays } from '../../src/core/soup.js';
 import { checkedEdit, edgeBetween, meshOf } from './helpers.js';
-import { corners, expectRefused, topology } from './topology.js';
+import { corners, expectRefused, holeChiChange, nth, propertyShapes, step, topology } from './topology.js';
+
+const SEED = 2718;
 
 /** The original assignment's first make-boundary case: quads (0, 4, 5, 1), (1, 5, 6, 2) and triangle (2, 6, 3) in a row. */
 function quadQuadTriangle() {
@@ -111,5 +114,27 @@ describe('makeBoundary', () => {
     expect(canMakeBoundary(mesh, 6)).toBe('f6 is not a face of this mesh (ids run 0…5)');
     checkedEdit(mesh, (m) => makeBoundary(m, 2));
     expect(canMakeBoundary(mesh, 2)).toBe('f2 is deleted');
+  });
+});
+
+describe('makeBoundary on random faces', () => {
+  it(`keeps closed, open and many-piece meshes valid, χ changing by what the face had along holes (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(fc.constantFrom(...Object.keys(propertyShapes)), fc.array(fc.nat(), { minLength: 1, maxLength: 10 }), (shape, picks) => {
+        const mesh = meshOf(propertyShapes[shape]());
+        for (const k of picks) {
+          const f = nth(mesh.faces(), k);
+          if (f === -1) break;
+          const chi = topology(mesh).chi;
+          const change = holeChiChange(mesh, f);
+          const result = step(mesh, canMakeBoundary(mesh, f), 'makeBoundary', (m) => makeBoundary(m, f));
+          if (!result) continue;
+          expect(topology(mesh).chi).toBe(chi + change);
+          expect(mesh.heFace[result.halfedge]).toBe(-1);
+          expect(mesh.isEdgeDeleted(result.halfedge >> 1)).toBe(false);
+        }
+      }),
+      { seed: SEED, numRuns: 60 },
+    );
   });
 });

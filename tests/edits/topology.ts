@@ -1,9 +1,16 @@
-/** Checks the dissolve, make-boundary and weld tests share: counts and χ, a face's corners, a refusal that leaves the mesh as it was. */
+/**
+ * Checks the dissolve, make-boundary and weld tests share: counts and χ, a face's corners, a
+ * refusal that leaves the mesh as it was, and the start meshes and steps of their property tests.
+ */
 import { expect } from 'vitest';
+import type { EditResult } from '../../src/core/edits/index.js';
 import { TopologyError } from '../../src/core/errors.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
+import { annulus, cube, disk, fan, grid, strip, tetrahedron, torus, uvSphere } from '../../src/core/shapes.js';
+import { mergeSoups, type PolygonSoup } from '../../src/core/soup.js';
 import { meshStats } from '../../src/core/stats.js';
 import { meshContents } from '../core/contents.js';
+import { checkedEdit } from './helpers.js';
 
 export interface Topology {
   V: number;
@@ -58,4 +65,61 @@ export function expectRefused(mesh: HalfedgeMesh, why: string | null, sentence: 
   expect(thrown).toBeInstanceOf(TopologyError);
   expect((thrown as Error).message).toBe(`${name}: ${why}`);
   expect(meshContents(mesh)).toEqual(before);
+}
+
+/** Start meshes of the property tests: closed, open, with two holes, and of several pieces. */
+export const propertyShapes: Record<string, () => PolygonSoup> = {
+  cube,
+  tetrahedron,
+  sphere: () => uvSphere(4, 6),
+  torus: () => torus(4, 3),
+  grid: () => grid(3, 3),
+  quadGrid: () => grid(3, 2, true),
+  disk: () => disk(2),
+  strip: () => strip(3),
+  fan: () => fan(4, 1.5 * Math.PI),
+  annulus: () => annulus(6),
+  cubeAndGrid: () => mergeSoups([cube(), grid(2, 2)]),
+  threePieces: () => mergeSoups([tetrahedron(), annulus(4), fan(3)]),
+};
+
+/** The `k`-th of `ids` (modulo their number), or -1 when there are none. */
+export function nth(ids: Iterable<number>, k: number): number {
+  const list = [...ids];
+  return list.length === 0 ? -1 : list[k % list.length];
+}
+
+/** The live boundary edges. */
+export function boundaryEdges(mesh: HalfedgeMesh): number[] {
+  return [...mesh.edges()].filter((e) => mesh.isBoundaryEdge(e));
+}
+
+/**
+ * How χ changes when face `f` becomes a hole, counted before: −1 for the face, +1 for each edge
+ * along a hole (it goes), −1 for each corner whose two edges on f both lie along a hole (it goes).
+ */
+export function holeChiChange(mesh: HalfedgeMesh, f: number): number {
+  let change = -1;
+  const start = mesh.fHalfedge[f];
+  let h = start;
+  do {
+    const along = mesh.heFace[h ^ 1] === -1;
+    if (along) change++;
+    if (along && mesh.heFace[mesh.heNext[h] ^ 1] === -1) change--;
+    h = mesh.heNext[h];
+  } while (h !== start);
+  return change;
+}
+
+/**
+ * One step of a property test: when the predicate allows it, the edit, checked against the
+ * pointer-diff oracle, validity and its undo/redo; when not, the refusal, mesh unchanged. Returns
+ * the result, or null when refused.
+ */
+export function step<R extends EditResult>(mesh: HalfedgeMesh, why: string | null, name: string, edit: (mesh: HalfedgeMesh) => R): R | null {
+  if (why) {
+    expectRefused(mesh, why, why, name, edit);
+    return null;
+  }
+  return checkedEdit(mesh, edit);
 }

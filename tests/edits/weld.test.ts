@@ -1,9 +1,12 @@
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { canWeldEdges, makeBoundary, weldEdges } from '../../src/core/edits/index.js';
+import { canMakeBoundary, canWeldEdges, makeBoundary, weldEdges } from '../../src/core/edits/index.js';
 import { annulus, cube, fan, grid, tetrahedron } from '../../src/core/shapes.js';
 import { soupFromArrays } from '../../src/core/soup.js';
 import { checkedEdit, edgeBetween, meshOf, square } from './helpers.js';
-import { corners, expectRefused, topology } from './topology.js';
+import { boundaryEdges, corners, expectRefused, loopId, nth, propertyShapes, step, topology } from './topology.js';
+
+const SEED = 1618;
 
 /** The original assignment's weld case: quad (0, 4, 5, 1) and, apart from it, triangle (2, 6, 3). */
 function quadBesideTriangle() {
@@ -81,10 +84,20 @@ describe('weldEdges', () => {
     const mesh = meshOf(square());
     const diagonal = edgeBetween(mesh, 0, 2);
     const side = edgeBetween(mesh, 0, 1);
-    expectRefused(mesh, canWeldEdges(mesh, side, diagonal), `e${diagonal} is not on the boundary: only boundary edges can be welded (it has faces on both sides)`, 'weldEdges', (m) =>
-      weldEdges(m, side, diagonal),
+    expectRefused(
+      mesh,
+      canWeldEdges(mesh, side, diagonal),
+      `e${diagonal} is not on the boundary: only boundary edges can be welded (it has faces on both sides)`,
+      'weldEdges',
+      (m) => weldEdges(m, side, diagonal),
     );
-    expectRefused(mesh, canWeldEdges(mesh, side, side), `e${side} is given twice: a weld joins two different edges`, 'weldEdges', (m) => weldEdges(m, side, side));
+    expectRefused(
+      mesh,
+      canWeldEdges(mesh, side, side),
+      `e${side} is given twice: a weld joins two different edges`,
+      'weldEdges',
+      (m) => weldEdges(m, side, side),
+    );
     expect(canWeldEdges(mesh, side, 99)).toBe('e99 is not an edge of this mesh (ids run 0…4)');
   });
 
@@ -92,7 +105,13 @@ describe('weldEdges', () => {
     const mesh = meshOf(tetrahedron());
     checkedEdit(mesh, (m) => makeBoundary(m, 3)); // the hole runs round 1, 2, 3
     const [e1, e2] = [edgeBetween(mesh, 1, 3), edgeBetween(mesh, 3, 2)];
-    expectRefused(mesh, canWeldEdges(mesh, e1, e2), /^v[12] and v[12] would merge, but e\d+ joins them: it would become a loop$/, 'weldEdges', (m) => weldEdges(m, e1, e2));
+    expectRefused(
+      mesh,
+      canWeldEdges(mesh, e1, e2),
+      /^v[12] and v[12] would merge, but e\d+ joins them: it would become a loop$/,
+      'weldEdges',
+      (m) => weldEdges(m, e1, e2),
+    );
   });
 
   it('refuses zipping a hole of four sides shut: the merged vertex would be joined twice to the fourth corner', () => {
@@ -116,8 +135,12 @@ describe('weldEdges', () => {
       ),
     );
     const [e1, e2] = [edgeBetween(mesh, 0, 1), edgeBetween(mesh, 3, 4)];
-    expectRefused(mesh, canWeldEdges(mesh, e1, e2), 'v1 and v3 would merge, but they are both corners of f0: it would pass through the merged vertex twice', 'weldEdges', (m) =>
-      weldEdges(m, e1, e2),
+    expectRefused(
+      mesh,
+      canWeldEdges(mesh, e1, e2),
+      'v1 and v3 would merge, but they are both corners of f0: it would pass through the merged vertex twice',
+      'weldEdges',
+      (m) => weldEdges(m, e1, e2),
     );
   });
 
@@ -131,6 +154,45 @@ describe('weldEdges', () => {
       /^welding would join v\d \(merged with v\d\) to v[14] by two edges, e\d+ and e\d+: a second edge between two vertices is not allowed$/,
       'weldEdges',
       (m) => weldEdges(m, e1, e2),
+    );
+  });
+});
+
+describe('weldEdges on random pairs of boundary edges', () => {
+  it(`keeps meshes valid, χ − 1 (0 for a zip), one loop fewer (two loops joined) or more (one split) (seed ${SEED})`, () => {
+    fc.assert(
+      fc.property(
+        fc.constantFrom(...Object.keys(propertyShapes)),
+        fc.array(fc.tuple(fc.nat(3), fc.nat(), fc.nat()), { minLength: 1, maxLength: 16 }),
+        (shape, picks) => {
+          const mesh = meshOf(propertyShapes[shape]());
+          for (const [kind, i, j] of picks) {
+            // one step in four opens a hole, so that closed meshes have edges to weld too
+            if (kind === 0) {
+              const f = nth(mesh.faces(), i);
+              if (f !== -1) step(mesh, canMakeBoundary(mesh, f), 'makeBoundary', (m) => makeBoundary(m, f));
+              continue;
+            }
+            const edges = boundaryEdges(mesh);
+            if (edges.length < 2) continue;
+            const e1 = edges[i % edges.length];
+            const e2 = edges[j % edges.length];
+            const h1 = mesh.heFace[2 * e1] === -1 ? 2 * e1 : 2 * e1 + 1;
+            const h2 = mesh.heFace[2 * e2] === -1 ? 2 * e2 : 2 * e2 + 1;
+            const zip = mesh.heNext[h1] === h2 || mesh.heNext[h2] === h1;
+            const sameLoop = loopId(mesh, h1) === loopId(mesh, h2);
+            const before = topology(mesh);
+            const result = step(mesh, canWeldEdges(mesh, e1, e2), 'weldEdges', (m) => weldEdges(m, e1, e2));
+            if (!result) continue;
+            const after = topology(mesh);
+            expect(result.edge).toBe(e1);
+            expect(mesh.isBoundaryEdge(e1)).toBe(false);
+            expect(after.chi).toBe(zip ? before.chi : before.chi - 1);
+            expect(after.loops).toBe(zip ? before.loops : sameLoop ? before.loops + 1 : before.loops - 1);
+          }
+        },
+      ),
+      { seed: SEED, numRuns: 80 },
     );
   });
 });
