@@ -27,7 +27,7 @@
  *          u4                              u4
  *
  *    ─ a ── v ── b ─  (hole above)      ─ a ─────── b ─      a boundary v: the faces below v
- *       ╲ f1│ f0╱                          ╲    f0   ╱        merge, and a new edge a–b closes
+ *       ╲ f0│ f1╱                          ╲    f0   ╱        merge, and a new edge a–b closes
  *        ╲  │  ╱               ──►         ╲       ╱         the merged face where v was
  *          u2                                u2
  * ```
@@ -35,8 +35,8 @@
  * the boundary does not merge with the boundary face"; its figure shows the two boundary edges at
  * v replaced by one straight edge between v's neighbours along the boundary). That new edge
  * copies the attributes of the edge a–v, and its halfedges the corner values of the halfedges
- * they replace; the merged face keeps the id and attributes of the face of v's handle (of the face
- * after the hole, at a boundary vertex).
+ * they replace. The merged face keeps the id and attributes of the face of v's handle, or at a
+ * boundary vertex of the face along v–a (where the hole runs a → v → b, as above).
  *
  * The cases of both dissolves:
  *   - refused, the merged face would pass through a vertex twice (two faces beside e that share
@@ -53,7 +53,7 @@
  *   - refused, a boundary edge whose face cannot become a hole (see `canMakeBoundary`);
  *   - accepted, a vertex whose merged face has the same corners as another face: a
  *     tetrahedron's vertex leaves two triangles on the same three corners, a valid, if flat,
- *     closed mesh (`collapseEdge` refuses its flattening, which would leave nothing to dissolve);
+ *     closed mesh (whose vertices the rule on 3 sides then refuses);
  *   - the merged face may be non-convex or non-planar. A face cannot pass through v twice in a
  *     valid mesh, so the faces around v are all different.
  *
@@ -91,9 +91,9 @@ export function canDissolveEdge(mesh: HalfedgeMesh, e: number): string | null {
 
 /**
  * Dissolves edge `e`: its two faces merge into the one on the `2e` side, or, on a boundary edge,
- * its face joins the hole. Returns the merged face, or -1 for a boundary edge (the face became
- * part of the hole; a halfedge of f that stays, now on the hole, is `twin` of any of its other
- * edges).
+ * its face joins the hole. Returns the merged face, or -1 for a boundary edge: there the face
+ * became part of the hole (`makeBoundary` of that face makes the same change and names a
+ * halfedge of the hole).
  * @example const { face } = dissolveEdge(mesh, e); // two triangles → one quad
  * @throws TopologyError with `canDissolveEdge`'s sentence when the dissolve does not apply.
  */
@@ -167,8 +167,8 @@ export function mergeAcrossAt(w: PointerWriter, e: number): number {
 // Dissolve vertex
 
 /**
- * The halfedges leaving v, in the order of the rotation `x → twin(prev(x))` (clockwise seen from
- * outside), from its handle: at a boundary vertex the first is the outgoing boundary halfedge.
+ * The halfedges leaving v, counter-clockwise (the rotation `x → twin(prev(x))`), from its handle:
+ * at a boundary vertex the first is the outgoing boundary halfedge.
  * Face i of the fan is `face(x_i)`, between x_i and `prev(x_i)`; its *far path*, the part of its
  * outline away from v, runs from `next(x_i)` to `prev(prev(x_i))`, from x_i's target to
  * x_(i+1)'s, so the far paths one after another are the merged face's outline.
@@ -225,7 +225,7 @@ export function canDissolveVertex(mesh: HalfedgeMesh, v: number): string | null 
     }
   }
   if (boundary) {
-    // the outline runs from a (after the hole) to b (before it), and a new edge b → a closes it
+    // the hole runs a → v → b; the outline runs from a round to b, and a new edge b → a closes it
     const a = heVertex[out[1] ^ 1];
     const b = heVertex[out[0] ^ 1];
     if (metIn.has(b)) return `v${b} is a corner of f${metIn.get(b)} away from v${v}: the merged face would pass through v${b} twice`;

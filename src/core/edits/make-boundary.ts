@@ -11,8 +11,10 @@
  *    p ───── q ───── r ───── s            p ───── q       r ───── s    b–q and c–r are boundary
  * ```
  * (┆: an edge now on the boundary.) Here f touched the outer hole along two separate edges, so
- * the strip falls in two pieces and the one hole becomes two loops, a b q p and c d s r. Where a
- * face lies inside the mesh, it simply opens a new hole (χ drops by 1, one boundary loop more).
+ * the strip falls in two pieces and the one hole becomes two loops, a b q p and c d s r, as in the
+ * original assignment's figure and test ("merging adjacent boundary faces"; there the face itself
+ * is handed back, marked boundary: here holes are not faces, so a halfedge of the hole is). Where
+ * a face lies inside the mesh, it simply opens a new hole (χ drops by 1, one boundary loop more).
  *
  * The cases:
  *   - an interior face: every edge keeps a face on its other side; one new boundary loop;

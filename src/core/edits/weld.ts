@@ -18,7 +18,8 @@
  * and a triangle lying side by side this way, and its test moves the merged ends to midpoints.
  *
  * The cases:
- *   - two edges of different pieces: the pieces join; their holes become one loop (χ − 1);
+ *   - two edges of different loops (of two pieces, or two holes of one piece): the loops become
+ *     one (χ − 1; two pieces become one);
  *   - two edges of one hole, apart: the hole splits in two loops (a strip rolls into a tube: χ − 1);
  *   - two edges of one hole that meet at a vertex (a *zip*, b1 = a2 or a1 = b2): only their other
  *     ends merge, and the shared vertex moves off the boundary (χ unchanged);
@@ -31,12 +32,13 @@
  *     (two ends that would merge are both joined to a third vertex; or a1 is joined to a2, or b1
  *     to b2): no file can hold a second edge between two vertices. This refuses zipping a hole
  *     of 4 sides shut.
- * Non-orientable gluings (a Möbius strip's) are not asked for: the pairing always follows the
- * orientation, so a weld never turns a surface over. Each merged vertex keeps one hole through
- * it, the gaps of its two ends joined at the weld, so the mesh stays manifold.
+ * A gluing that needs the other pairing (a strip's ends twisted into a Möbius strip) is never
+ * made: the pairing always follows the orientation, so a weld cannot make a surface
+ * non-orientable. Each merged vertex keeps one hole through it, the gaps of its two ends joined
+ * at the weld, so the mesh stays manifold.
  *
- * O(valence of the four ends): their one-rings are compared, and the halfedges leaving a2 and b2
- * move to b1 and a1.
+ * O(valence² of the four ends): the one-rings of each merging pair are compared pairwise (a few
+ * dozen comparisons at the usual valence), and the halfedges leaving a2 and b2 move to b1 and a1.
  */
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
