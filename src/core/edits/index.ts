@@ -11,6 +11,10 @@
  * | `canSplitFace`             | `splitFace`              | an edge between two corners of a face        |
  * | `canPokeFace`              | `pokeFace`               | a fan of triangles around the centroid       |
  * | `canMergeFaces`            | `mergeFaces`             | erase an edge, joining its two faces         |
+ * | `canDissolveEdge`          | `dissolveEdge`           | the same, or a boundary edge's face → a hole |
+ * | `canDissolveVertex`        | `dissolveVertex`         | a vertex goes, its faces merge into one      |
+ * | `canMakeBoundary`          | `makeBoundary`           | a face becomes a hole (merging with holes)   |
+ * | `canWeldEdges`             | `weldEdges`              | two boundary edges glued into one edge       |
  * | `canTriangulateFace`       | `triangulateFace`        | ear clipping (non-convex faces too)          |
  * |                            | `triangulateMesh`        | every face                                   |
  *
@@ -25,8 +29,10 @@
  *   else highlight(collapseEdge(mesh, e).changes);
  */
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
+export { canDissolveEdge, canDissolveVertex, dissolveEdge, dissolveVertex } from './dissolve.js';
 export { halfedgeFromTo } from './find.js';
 export { canFlipEdge, flipEdge } from './flip.js';
+export { canMakeBoundary, makeBoundary } from './make-boundary.js';
 export { canMergeFaces, mergeFaces, type MergeResult } from './merge.js';
 export { canPokeFace, pokeFace } from './poke.js';
 export {
@@ -47,4 +53,13 @@ export {
   type TriangulateMeshResult,
   triangulatePolygon,
 } from './triangulate.js';
-export { type EditOptions, type EditResult, PointerWriter, type VertexEditResult } from './writer.js';
+export { canWeldEdges, weldEdges } from './weld.js';
+export {
+  type EdgeEditResult,
+  type EditOptions,
+  type EditResult,
+  type FaceEditResult,
+  type HalfedgeEditResult,
+  PointerWriter,
+  type VertexEditResult,
+} from './writer.js';
