@@ -56,6 +56,21 @@ export interface VertexEditResult extends EditResult {
   vertex: number;
 }
 
+/** An edit that makes or keeps one face of interest: the merged face of a dissolve. */
+export interface FaceEditResult extends EditResult {
+  face: number;
+}
+
+/** An edit that names one halfedge of interest: a boundary halfedge of the hole `makeBoundary` made. */
+export interface HalfedgeEditResult extends EditResult {
+  halfedge: number;
+}
+
+/** An edit that makes or keeps one edge of interest: the edge two boundary edges were welded into. */
+export interface EdgeEditResult extends EditResult {
+  edge: number;
+}
+
 const { heNext: NEXT, hePrev: PREV, heVertex: ORIGIN, heFace: FACE, vHalfedge: VERTEX_HALFEDGE, fHalfedge: FACE_HALFEDGE } = meshArrayIndex;
 const { vDeleted: VERTEX_DELETED, eDeleted: EDGE_DELETED, fDeleted: FACE_DELETED } = meshArrayIndex;
 
