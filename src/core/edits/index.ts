@@ -13,6 +13,7 @@
  * | `canMergeFaces`            | `mergeFaces`             | erase an edge, joining its two faces         |
  * | `canTriangulateFace`       | `triangulateFace`        | ear clipping (non-convex faces too)          |
  * |                            | `triangulateMesh`        | every face                                   |
+ * | `canExtrudeFace`           | `extrudeFace`            | a ring of quads around a face, moved, inset  |
  *
  * A predicate returns null when the edit applies, else a sentence naming the elements; the edit
  * throws a `TopologyError` with that sentence if called anyway. Each edit returns an
@@ -25,6 +26,7 @@
  *   else highlight(collapseEdge(mesh, e).changes);
  */
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
+export { canExtrudeFace, extrudeFace, type ExtrudeOptions, type ExtrudePlacement } from './extrude.js';
 export { halfedgeFromTo } from './find.js';
 export { canFlipEdge, flipEdge } from './flip.js';
 export { canMergeFaces, mergeFaces, type MergeResult } from './merge.js';
@@ -47,4 +49,10 @@ export {
   type TriangulateMeshResult,
   triangulatePolygon,
 } from './triangulate.js';
-export { type EditOptions, type EditResult, PointerWriter, type VertexEditResult } from './writer.js';
+export {
+  type EditOptions,
+  type EditResult,
+  type FaceEditResult,
+  PointerWriter,
+  type VertexEditResult,
+} from './writer.js';
