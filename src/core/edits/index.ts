@@ -14,6 +14,8 @@
  * | `canTriangulateFace`       | `triangulateFace`        | ear clipping (non-convex faces too)          |
  * |                            | `triangulateMesh`        | every face                                   |
  * | `canExtrudeFace`           | `extrudeFace`            | a ring of quads around a face, moved, inset  |
+ * | `canBevelVertex`           | `bevelVertex`            | a face replaces a vertex                     |
+ * | `canBevelEdge`             | `bevelEdge`              | a face replaces an edge                      |
  *
  * A predicate returns null when the edit applies, else a sentence naming the elements; the edit
  * throws a `TopologyError` with that sentence if called anyway. Each edit returns an
@@ -25,6 +27,7 @@
  *   if (why) showMessage(why);
  *   else highlight(collapseEdge(mesh, e).changes);
  */
+export { bevelEdge, bevelVertex, type BevelOptions, canBevelEdge, canBevelVertex } from './bevel.js';
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
 export { canExtrudeFace, extrudeFace, type ExtrudeOptions, type ExtrudePlacement } from './extrude.js';
 export { halfedgeFromTo } from './find.js';
