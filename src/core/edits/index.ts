@@ -16,6 +16,7 @@
  * | `canExtrudeFace`           | `extrudeFace`            | a ring of quads around a face, moved, inset  |
  * | `canBevelVertex`           | `bevelVertex`            | a face replaces a vertex                     |
  * | `canBevelEdge`             | `bevelEdge`              | a face replaces an edge                      |
+ * | `canCollapseFace`          | `collapseFace`           | a face shrinks to a vertex at its centroid   |
  *
  * A predicate returns null when the edit applies, else a sentence naming the elements; the edit
  * throws a `TopologyError` with that sentence if called anyway. Each edit returns an
@@ -29,6 +30,7 @@
  */
 export { bevelEdge, bevelVertex, type BevelOptions, canBevelEdge, canBevelVertex } from './bevel.js';
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
+export { canCollapseFace, collapseFace } from './collapse-face.js';
 export { canExtrudeFace, extrudeFace, type ExtrudeOptions, type ExtrudePlacement } from './extrude.js';
 export { halfedgeFromTo } from './find.js';
 export { canFlipEdge, flipEdge } from './flip.js';
