@@ -204,9 +204,10 @@ export function collapseEdgeAt(w: PointerWriter, e: number, position: ArrayLike<
 
 /**
  * After b merged into a, halfedge `gone` runs parallel to `kept` (same ends, same direction):
- * `kept` takes gone's place in its loop, and gone's edge is deleted.
+ * `kept` takes gone's place in its loop, and gone's edge is deleted. (The face collapse merges
+ * the edges of each triangle beside the face the same way.)
  */
-function replaceParallel(w: PointerWriter, gone: number, kept: number): void {
+export function replaceParallel(w: PointerWriter, gone: number, kept: number): void {
   const { hePrev, heNext, heVertex, heFace, fHalfedge, vHalfedge } = w.mesh;
   const f = heFace[gone];
   w.copy('halfedge', kept, gone);

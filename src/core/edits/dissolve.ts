@@ -63,7 +63,7 @@
  */
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { halfedgeFromTo, missingEdge } from './find.js';
+import { halfedgeFromTo, missingEdge, missingVertex } from './find.js';
 import { canMakeBoundary, makeBoundaryAt } from './make-boundary.js';
 import { type EditOptions, type FaceEditResult, PointerWriter } from './writer.js';
 
@@ -183,12 +183,6 @@ function outgoing(mesh: HalfedgeMesh, v: number): number[] {
     x = hePrev[x] ^ 1;
   } while (x !== start && out.length <= mesh.halfedgeSlots);
   return out;
-}
-
-/** Why `v` is not a live vertex of `mesh`, or null when it is one. */
-function missingVertex(mesh: HalfedgeMesh, v: number): string | null {
-  if (!Number.isInteger(v) || v < 0 || v >= mesh.vertexSlots) return `v${v} is not a vertex of this mesh (ids run 0…${mesh.vertexSlots - 1})`;
-  return mesh.vDeleted[v] ? `v${v} is deleted` : null;
 }
 
 /**

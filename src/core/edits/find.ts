@@ -41,6 +41,12 @@ export function missingEdge(mesh: HalfedgeMesh, e: number): string | null {
   return mesh.eDeleted[e] ? `e${e} is deleted` : null;
 }
 
+/** Why `v` is not a live vertex of `mesh` ("v12 is deleted"), or null when it is one. */
+export function missingVertex(mesh: HalfedgeMesh, v: number): string | null {
+  if (!Number.isInteger(v) || v < 0 || v >= mesh.vertexSlots) return `v${v} is not a vertex of this mesh (ids run 0…${mesh.vertexSlots - 1})`;
+  return mesh.vDeleted[v] ? `v${v} is deleted` : null;
+}
+
 /** Why `f` is not a live face of `mesh`, or null when it is one. */
 export function missingFace(mesh: HalfedgeMesh, f: number): string | null {
   if (!Number.isInteger(f) || f < 0 || f >= mesh.faceSlots) return `f${f} is not a face of this mesh (ids run 0…${mesh.faceSlots - 1})`;

@@ -17,6 +17,10 @@
  * | `canWeldEdges`             | `weldEdges`              | two boundary edges glued into one edge       |
  * | `canTriangulateFace`       | `triangulateFace`        | ear clipping (non-convex faces too)          |
  * |                            | `triangulateMesh`        | every face                                   |
+ * | `canExtrudeFace`           | `extrudeFace`            | a ring of quads around a face, moved, inset  |
+ * | `canBevelVertex`           | `bevelVertex`            | a face replaces a vertex                     |
+ * | `canBevelEdge`             | `bevelEdge`              | a face replaces an edge                      |
+ * | `canCollapseFace`          | `collapseFace`           | a face shrinks to a vertex at its centroid   |
  *
  * A predicate returns null when the edit applies, else a sentence naming the elements; the edit
  * throws a `TopologyError` with that sentence if called anyway. Each edit returns an
@@ -28,8 +32,11 @@
  *   if (why) showMessage(why);
  *   else highlight(collapseEdge(mesh, e).changes);
  */
+export { bevelEdge, bevelVertex, type BevelOptions, canBevelEdge, canBevelVertex } from './bevel.js';
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
+export { canCollapseFace, collapseFace } from './collapse-face.js';
 export { canDissolveEdge, canDissolveVertex, dissolveEdge, dissolveVertex } from './dissolve.js';
+export { canExtrudeFace, extrudeFace, type ExtrudeOptions, type ExtrudePlacement } from './extrude.js';
 export { halfedgeFromTo } from './find.js';
 export { canFlipEdge, flipEdge } from './flip.js';
 export { canMakeBoundary, makeBoundary } from './make-boundary.js';
