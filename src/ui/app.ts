@@ -195,6 +195,7 @@ export class App {
     this.operations = new OperationsPanel(this.byId('operations'), {
       start: (request) => void this.request('start', request),
       edit: (request) => void this.request('edit', request),
+      say: (message) => this.say(message),
       showPlane: (plane) => this.showPlane(plane),
       setPlaneMode: (mode) => this.gizmo.setMode(mode),
     });

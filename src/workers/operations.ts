@@ -4,17 +4,32 @@
  * says why it does not apply (so the page can disable a button with that sentence as its tooltip).
  */
 import {
+  bevelEdge,
+  bevelVertex,
+  canBevelEdge,
+  canBevelVertex,
   canCollapseEdge,
+  canCollapseFace,
+  canDissolveEdge,
+  canDissolveVertex,
+  canExtrudeFace,
   canFlipEdge,
+  canMakeBoundary,
   canMergeFaces,
   canPokeFace,
   canSplitEdge,
   canSplitEdgeTriangulated,
   canSplitFace,
   canTriangulateFace,
+  canWeldEdges,
   collapseEdge,
+  collapseFace,
+  dissolveEdge,
+  dissolveVertex,
   type EditResult,
+  extrudeFace,
   flipEdge,
+  makeBoundary,
   mergeFaces,
   pokeFace,
   splitEdge,
@@ -22,6 +37,7 @@ import {
   splitFace,
   triangulateFace,
   triangulateMesh,
+  weldEdges,
 } from '../core/edits/index.js';
 import { type KeepSide, planeCut } from '../core/cut/index.js';
 import { cannotDecimate, type DecimationOptions, decimation } from '../core/decimation/index.js';
@@ -44,7 +60,19 @@ export type EditRequest =
   | { kind: 'poke-face'; face: number }
   | { kind: 'erase-edge'; edge: number }
   | { kind: 'triangulate-face'; face: number }
-  | { kind: 'triangulate-mesh' };
+  | { kind: 'triangulate-mesh' }
+  /** `offset` along the face's normal (default: half its mean side, so the new quads show), `inset` toward its centre, 0 … 1. */
+  | { kind: 'extrude-face'; face: number; offset?: number; inset?: number }
+  /** `amount`: how far along each edge the new corners go, 0 … 1 (default 0.25, so the new face shows). */
+  | { kind: 'bevel-vertex'; vertex: number; amount?: number }
+  | { kind: 'bevel-edge'; edge: number; amount?: number }
+  | { kind: 'dissolve-vertex'; vertex: number }
+  | { kind: 'dissolve-edge'; edge: number }
+  | { kind: 'collapse-face'; face: number }
+  | { kind: 'make-boundary'; face: number }
+  | { kind: 'weld-edges'; edges: [number, number] };
+
+export type EditKind = EditRequest['kind'];
 
 const schemeNames: Record<SubdivisionScheme, string> = {
   loop: 'Loop subdivision',
@@ -117,26 +145,93 @@ export function startOperation(mesh: HalfedgeMesh, request: OperationRequest): {
   }
 }
 
+/** How far a bevel's new corners go along their edges when a request does not say: far enough to see the new face. */
+const BEVEL_AMOUNT = 0.25;
+
+/** Each edit in one place: why it does not apply (null: it does), what it does, and its history label. */
+interface EditDefinition<R extends EditRequest> {
+  cannot(mesh: HalfedgeMesh, request: R): string | null;
+  apply(mesh: HalfedgeMesh, request: R): EditResult;
+  label(request: R): string;
+}
+
+type EditDefinitions = { [K in EditKind]: EditDefinition<Extract<EditRequest, { kind: K }>> };
+
+const editDefinitions: EditDefinitions = {
+  'flip-edge': { cannot: (m, r) => canFlipEdge(m, r.edge), apply: (m, r) => flipEdge(m, r.edge), label: (r) => `flip e${r.edge}` },
+  'split-edge': {
+    cannot: (m, r) => (r.triangulate ? canSplitEdgeTriangulated(m, r.edge) : canSplitEdge(m, r.edge)),
+    apply: (m, r) => (r.triangulate ? splitEdgeTriangulated(m, r.edge) : splitEdge(m, r.edge)),
+    label: (r) => (r.triangulate ? `split e${r.edge} (and its triangles)` : `split e${r.edge}`),
+  },
+  'collapse-edge': { cannot: (m, r) => canCollapseEdge(m, r.edge), apply: (m, r) => collapseEdge(m, r.edge), label: (r) => `collapse e${r.edge}` },
+  'split-face': {
+    cannot: (m, r) => canSplitFace(m, r.face, r.from, r.to),
+    apply: (m, r) => splitFace(m, r.face, r.from, r.to),
+    label: (r) => `split f${r.face} from v${r.from} to v${r.to}`,
+  },
+  'poke-face': { cannot: (m, r) => canPokeFace(m, r.face), apply: (m, r) => pokeFace(m, r.face), label: (r) => `poke f${r.face}` },
+  'erase-edge': { cannot: (m, r) => canMergeFaces(m, r.edge), apply: (m, r) => mergeFaces(m, r.edge), label: (r) => `erase e${r.edge}` },
+  'triangulate-face': { cannot: (m, r) => canTriangulateFace(m, r.face), apply: (m, r) => triangulateFace(m, r.face), label: (r) => `triangulate f${r.face}` },
+  'triangulate-mesh': { cannot: (m) => (m.nFaces === 0 ? 'there are no faces to triangulate' : null), apply: (m) => triangulateMesh(m), label: () => 'triangulate every face' },
+  'extrude-face': {
+    cannot: (m, r) => canExtrudeFace(m, r.face, extrudePlacement(m, r)),
+    apply: (m, r) => extrudeFace(m, r.face, extrudePlacement(m, r)),
+    label: (r) => `extrude f${r.face}`,
+  },
+  'bevel-vertex': {
+    cannot: (m, r) => canBevelVertex(m, r.vertex, r.amount ?? BEVEL_AMOUNT),
+    apply: (m, r) => bevelVertex(m, r.vertex, { amount: r.amount ?? BEVEL_AMOUNT }),
+    label: (r) => `bevel v${r.vertex}`,
+  },
+  'bevel-edge': {
+    cannot: (m, r) => canBevelEdge(m, r.edge, r.amount ?? BEVEL_AMOUNT),
+    apply: (m, r) => bevelEdge(m, r.edge, { amount: r.amount ?? BEVEL_AMOUNT }),
+    label: (r) => `bevel e${r.edge}`,
+  },
+  'dissolve-vertex': { cannot: (m, r) => canDissolveVertex(m, r.vertex), apply: (m, r) => dissolveVertex(m, r.vertex), label: (r) => `dissolve v${r.vertex}` },
+  'dissolve-edge': { cannot: (m, r) => canDissolveEdge(m, r.edge), apply: (m, r) => dissolveEdge(m, r.edge), label: (r) => `dissolve e${r.edge}` },
+  'collapse-face': { cannot: (m, r) => canCollapseFace(m, r.face), apply: (m, r) => collapseFace(m, r.face), label: (r) => `collapse f${r.face}` },
+  'make-boundary': { cannot: (m, r) => canMakeBoundary(m, r.face), apply: (m, r) => makeBoundary(m, r.face), label: (r) => `make f${r.face} a hole` },
+  'weld-edges': {
+    cannot: (m, r) => (Array.isArray(r.edges) && r.edges.length === 2 ? canWeldEdges(m, r.edges[0], r.edges[1]) : 'a weld needs two boundary edges: edges: [e1, e2]'),
+    apply: (m, r) => weldEdges(m, r.edges[0], r.edges[1]),
+    label: (r) => `weld e${r.edges[0]} and e${r.edges[1]}`,
+  },
+};
+
+/** The extrusion a request asks for; without an offset, half the face's mean side along its normal, so the new quads show. */
+function extrudePlacement(mesh: HalfedgeMesh, request: Extract<EditRequest, { kind: 'extrude-face' }>): { offset: number; inset: number } {
+  return { offset: request.offset ?? 0.5 * meanSide(mesh, request.face), inset: request.inset ?? 0 };
+}
+
+/** The mean length of face f's sides (0 for an id that is not a live face: the predicate then says why). */
+function meanSide(mesh: HalfedgeMesh, f: number): number {
+  if (!Number.isInteger(f) || f < 0 || f >= mesh.faceSlots || mesh.fDeleted[f]) return 0;
+  let total = 0;
+  let sides = 0;
+  const start = mesh.faceHalfedge(f);
+  let h = start;
+  do {
+    const [a, b] = [mesh.position(mesh.origin(h)), mesh.position(mesh.target(h))];
+    total += Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+    sides++;
+    h = mesh.next(h);
+  } while (h !== start && sides < mesh.halfedgeSlots);
+  return total / sides;
+}
+
+/** The definition of a request's edit; a kind there is none of (from a link, from a script) is refused by name. */
+function definitionOf(request: EditRequest): EditDefinition<EditRequest> {
+  const kind = String((request as { kind?: unknown }).kind);
+  // a kind that comes as data counts only as one of the table's own entries, never as a prototype's
+  if (!Object.hasOwn(editDefinitions, kind)) throw new TopologyError(`there is no edit '${kind}' (edits: ${Object.keys(editDefinitions).join(', ')})`);
+  return (editDefinitions as unknown as Record<string, EditDefinition<EditRequest>>)[kind]!;
+}
+
 /** Null when the edit applies, else the sentence saying why not. */
 export function cannotEdit(mesh: HalfedgeMesh, request: EditRequest): string | null {
-  switch (request.kind) {
-    case 'flip-edge':
-      return canFlipEdge(mesh, request.edge);
-    case 'split-edge':
-      return request.triangulate ? canSplitEdgeTriangulated(mesh, request.edge) : canSplitEdge(mesh, request.edge);
-    case 'collapse-edge':
-      return canCollapseEdge(mesh, request.edge);
-    case 'split-face':
-      return canSplitFace(mesh, request.face, request.from, request.to);
-    case 'poke-face':
-      return canPokeFace(mesh, request.face);
-    case 'erase-edge':
-      return canMergeFaces(mesh, request.edge);
-    case 'triangulate-face':
-      return canTriangulateFace(mesh, request.face);
-    case 'triangulate-mesh':
-      return mesh.nFaces === 0 ? 'there are no faces to triangulate' : null;
-  }
+  return definitionOf(request).cannot(mesh, request);
 }
 
 /**
@@ -144,28 +239,10 @@ export function cannotEdit(mesh: HalfedgeMesh, request: EditRequest): string | n
  * @throws TopologyError with the `cannotEdit` sentence when it does not apply.
  */
 export function applyEdit(mesh: HalfedgeMesh, request: EditRequest): EditResult & { label: string } {
-  const reason = cannotEdit(mesh, request);
+  const definition = definitionOf(request);
+  const reason = definition.cannot(mesh, request);
   if (reason) throw new TopologyError(reason);
-  switch (request.kind) {
-    case 'flip-edge':
-      return { label: `flip e${request.edge}`, ...flipEdge(mesh, request.edge) };
-    case 'split-edge':
-      return request.triangulate
-        ? { label: `split e${request.edge} (and its triangles)`, ...splitEdgeTriangulated(mesh, request.edge) }
-        : { label: `split e${request.edge}`, ...splitEdge(mesh, request.edge) };
-    case 'collapse-edge':
-      return { label: `collapse e${request.edge}`, ...collapseEdge(mesh, request.edge) };
-    case 'split-face':
-      return { label: `split f${request.face} from v${request.from} to v${request.to}`, ...splitFace(mesh, request.face, request.from, request.to) };
-    case 'poke-face':
-      return { label: `poke f${request.face}`, ...pokeFace(mesh, request.face) };
-    case 'erase-edge':
-      return { label: `erase e${request.edge}`, ...mergeFaces(mesh, request.edge) };
-    case 'triangulate-face':
-      return { label: `triangulate f${request.face}`, ...triangulateFace(mesh, request.face) };
-    case 'triangulate-mesh':
-      return { label: 'triangulate every face', ...triangulateMesh(mesh) };
-  }
+  return { label: definition.label(request), ...definition.apply(mesh, request) };
 }
 
 function hasBoundary(mesh: HalfedgeMesh): boolean {

@@ -6,13 +6,15 @@
  */
 import type { HalfedgeMesh } from '../../core/index.js';
 import type { CheckedOperation } from '../../workers/protocol.js';
-import { cannotEdit, cannotStart, type EditRequest, type OperationRequest } from '../../workers/operations.js';
+import { cannotEdit, cannotStart, type EditKind, type EditRequest, type OperationRequest } from '../../workers/operations.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
 
 export interface OperationActions {
   start(request: OperationRequest): void;
   edit(request: EditRequest): void;
+  /** Says a sentence in the status line (what a two-step edit waits for). */
+  say(message: string): void;
   /** Shows or hides the plane gizmo; called with the plane typed in the form. */
   showPlane(plane: [number, number, number, number] | null): void;
   /** Whether dragging the gizmo moves or turns the plane. */
@@ -26,21 +28,40 @@ const schemes: Array<{ scheme: 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3';
   { scheme: 'sqrt3', label: '√3' },
 ];
 
-type EditKind = EditRequest['kind'];
-
-const edits: Array<{ kind: EditKind; label: string; needs: 'edge' | 'face' | 'mesh' }> = [
+/** The edits of the selection, by what they act on; a weld takes two edges, chosen one after the other. */
+const edits: Array<{ kind: Exclude<EditKind, 'split-face'>; label: string; needs: 'edge' | 'vertex' | 'face' | 'mesh' | 'two edges' }> = [
   { kind: 'flip-edge', label: 'Flip edge', needs: 'edge' },
   { kind: 'split-edge', label: 'Split edge', needs: 'edge' },
   { kind: 'collapse-edge', label: 'Collapse edge', needs: 'edge' },
   { kind: 'erase-edge', label: 'Erase edge', needs: 'edge' },
+  { kind: 'dissolve-edge', label: 'Dissolve edge', needs: 'edge' },
+  { kind: 'bevel-edge', label: 'Bevel edge', needs: 'edge' },
+  { kind: 'weld-edges', label: 'Weld edges', needs: 'two edges' },
+  { kind: 'dissolve-vertex', label: 'Dissolve vertex', needs: 'vertex' },
+  { kind: 'bevel-vertex', label: 'Bevel vertex', needs: 'vertex' },
   { kind: 'poke-face', label: 'Poke face', needs: 'face' },
+  { kind: 'extrude-face', label: 'Extrude face', needs: 'face' },
+  { kind: 'collapse-face', label: 'Collapse face', needs: 'face' },
+  { kind: 'make-boundary', label: 'Make a hole', needs: 'face' },
   { kind: 'triangulate-face', label: 'Triangulate face', needs: 'face' },
   { kind: 'triangulate-mesh', label: 'Triangulate all', needs: 'mesh' },
 ];
 
+/** The vertex a selection names (a vertex, or the origin of a halfedge), or -1. */
+function selectedVertex(mesh: HalfedgeMesh, s: Selection | null): number {
+  return s?.kind === 'vertex' ? s.id : s?.kind === 'halfedge' ? mesh.origin(s.id) : -1;
+}
+
 /** The edge a selection names (an edge, or a halfedge's edge), or -1. */
 function selectedEdge(s: Selection | null): number {
   return s?.kind === 'edge' ? s.id : s?.kind === 'halfedge' ? s.id >> 1 : -1;
+}
+
+/** A weld's first edge, as a request whose second edge is still to come; or why this edge cannot be one. */
+function weldStart(mesh: HalfedgeMesh, edge: number): EditRequest | string {
+  if (edge >= mesh.edgeSlots || mesh.eDeleted[edge]) return `e${edge} is not an edge of this mesh`;
+  const onBoundary = mesh.heFace[2 * edge] === -1 || mesh.heFace[2 * edge + 1] === -1;
+  return onBoundary ? { kind: 'weld-edges', edges: [edge, -1] } : `e${edge} is not on the boundary: a weld joins two boundary edges`;
 }
 
 /** The face a selection names (a face, or a halfedge's face), or -1. */
@@ -91,6 +112,8 @@ export class OperationsPanel {
   private mesh: HalfedgeMesh | null = null;
   private selection: Selection | null = null;
   private gizmoShown = false;
+  /** The first edge of a weld, chosen and waiting for the second (null: none). */
+  private weldFirst: number | null = null;
 
   constructor(
     container: HTMLElement,
@@ -160,10 +183,14 @@ export class OperationsPanel {
     this.selection = selection;
     this.unavailable = unavailable;
     if (newMesh) this.targetFaces.value = String(Math.max(4, Math.floor(mesh.nFaces / 2)));
+    // a weld's first edge belongs to the mesh it was chosen on
+    if (this.weldFirst !== null && (this.weldFirst >= mesh.edgeSlots || mesh.eDeleted[this.weldFirst])) this.weldFirst = null;
     schemes.forEach(({ scheme, label }, i) => setAvailability(this.schemeButtons[i], `Start ${label} subdivision`, unavailable[scheme]));
     setAvailability(this.cutButton, 'Start the plane cut', cannotStart(mesh, this.cutRequest()));
     this.updateChecked();
-    edits.forEach(({ kind, label }, i) => setAvailability(this.editButtons[i], label, this.reasonAgainst(kind)));
+    edits.forEach(({ kind, label }, i) =>
+      setAvailability(this.editButtons[i], kind === 'weld-edges' && this.weldFirst !== null ? `Weld e${this.weldFirst} to the selected edge` : label, this.reasonAgainst(kind)),
+    );
     this.updateSplitFace();
   }
 
@@ -201,26 +228,42 @@ export class OperationsPanel {
     return { kind: 'cut', plane: this.planeValues(), keep: this.keep.value as 'both' | 'above' | 'below', cap: this.cap.checked };
   }
 
-  private request(kind: EditKind): EditRequest | string {
+  private request(kind: (typeof edits)[number]['kind']): EditRequest | string {
     const mesh = this.mesh!;
-    const need = edits.find((e) => e.kind === kind)?.needs;
+    const need = edits.find((e) => e.kind === kind)!.needs;
     if (need === 'mesh') return { kind: 'triangulate-mesh' };
-    if (need === 'edge') {
+    if (need === 'edge' || need === 'two edges') {
       const edge = selectedEdge(this.selection);
-      return edge < 0 ? 'select an edge or a halfedge first' : ({ kind, edge } as EditRequest);
+      if (need === 'edge' || this.weldFirst === null) return edge < 0 ? 'select an edge or a halfedge first' : need === 'edge' ? ({ kind, edge } as EditRequest) : weldStart(mesh, edge);
+      if (edge < 0 || edge === this.weldFirst) return `select the boundary edge to weld e${this.weldFirst} to`;
+      return { kind: 'weld-edges', edges: [this.weldFirst, edge] };
+    }
+    if (need === 'vertex') {
+      const vertex = selectedVertex(mesh, this.selection);
+      return vertex < 0 ? 'select a vertex or a halfedge from it first' : ({ kind, vertex } as EditRequest);
     }
     const face = selectedFace(mesh, this.selection);
     return face < 0 ? 'select a face or a halfedge inside one first' : ({ kind, face } as EditRequest);
   }
 
-  private reasonAgainst(kind: EditKind): string | null {
+  private reasonAgainst(kind: (typeof edits)[number]['kind']): string | null {
     const request = this.request(kind);
-    return typeof request === 'string' ? request : cannotEdit(this.mesh!, request);
+    if (typeof request === 'string') return request;
+    // the first edge of a weld only has to be on the boundary: the second decides the rest
+    return request.kind === 'weld-edges' && this.weldFirst === null ? null : cannotEdit(this.mesh!, request);
   }
 
-  private runEdit(kind: EditKind): void {
+  private runEdit(kind: (typeof edits)[number]['kind']): void {
     const request = this.request(kind);
-    if (typeof request !== 'string') this.actions.edit(request);
+    if (typeof request === 'string') return;
+    if (request.kind === 'weld-edges' && this.weldFirst === null) {
+      this.weldFirst = request.edges[0];
+      this.actions.say(`Weld: e${this.weldFirst} is the first edge. Select the boundary edge to weld it to, then Weld edges again.`);
+      this.update(this.mesh!, this.selection, this.unavailable!);
+      return;
+    }
+    if (request.kind === 'weld-edges') this.weldFirst = null;
+    this.actions.edit(request);
   }
 
   private updateSplitFace(): void {
