@@ -17,8 +17,24 @@ import { applyChange } from '../src/core/change.js';
 import { diffPointers } from '../src/core/diff.js';
 import { meshFingerprint } from '../src/core/fingerprint.js';
 import {
+  bevelEdge,
+  bevelVertex,
+  canBevelEdge,
+  canBevelVertex,
   canCollapseEdge,
+  canCollapseFace,
+  canDissolveEdge,
+  canDissolveVertex,
+  canExtrudeFace,
   canFlipEdge,
+  canMakeBoundary,
+  canWeldEdges,
+  collapseFace,
+  dissolveEdge,
+  dissolveVertex,
+  extrudeFace,
+  makeBoundary,
+  weldEdges,
   canMergeFaces,
   canPokeFace,
   canSplitEdge,
@@ -150,7 +166,7 @@ const fraction = fc.double({ min: 0.05, max: 0.95, noNaN: true });
 /** An edit of one element, the `k`-th live edge (`e`) or face (`f`), with its predicate. */
 export interface ElementEdit {
   name: string;
-  on: 'e' | 'f';
+  on: 'e' | 'f' | 'v';
   can: (mesh: HalfedgeMesh, id: number) => string | null;
   edit: (mesh: HalfedgeMesh, id: number) => EditResult;
 }
@@ -163,6 +179,13 @@ export const elementEdits: ElementEdit[] = [
   { name: 'merge', on: 'e', can: canMergeFaces, edit: mergeFaces },
   { name: 'poke', on: 'f', can: canPokeFace, edit: pokeFace },
   { name: 'triangulate', on: 'f', can: canTriangulateFace, edit: triangulateFace },
+  { name: 'extrude', on: 'f', can: (m, f) => canExtrudeFace(m, f, { offset: 0.2, inset: 0.3 }), edit: (m, f) => extrudeFace(m, f, { offset: 0.2, inset: 0.3 }) },
+  { name: 'bevel-vertex', on: 'v', can: (m, v) => canBevelVertex(m, v, 0.25), edit: (m, v) => bevelVertex(m, v, { amount: 0.25 }) },
+  { name: 'bevel-edge', on: 'e', can: (m, e) => canBevelEdge(m, e, 0.25), edit: (m, e) => bevelEdge(m, e, { amount: 0.25 }) },
+  { name: 'dissolve-vertex', on: 'v', can: canDissolveVertex, edit: dissolveVertex },
+  { name: 'dissolve-edge', on: 'e', can: canDissolveEdge, edit: dissolveEdge },
+  { name: 'collapse-face', on: 'f', can: canCollapseFace, edit: collapseFace },
+  { name: 'make-boundary', on: 'f', can: canMakeBoundary, edit: makeBoundary },
 ];
 
 const elementCommand = ({ name, on, can, edit }: ElementEdit) => pick.map((k) => new Step(name, (m) => elementStep(m, on, k, name, can, edit)));
@@ -174,6 +197,7 @@ export const editCommands: Array<fc.Arbitrary<Step>> = [
   fc.tuple(pick, fraction).map(([k, t]) => new Step('split', (m) => elementStep(m, 'e', k, 'split', (mesh, e) => canSplitEdge(mesh, e, t), (mesh, e) => splitEdge(mesh, e, { t })))),
   ...othersOnOneElement,
   fc.tuple(pick, pick, pick).map(([k, i, j]) => new Step('split-face', (m) => splitFaceStep(m, k, i, j))),
+  fc.tuple(pick, pick).map(([i, j]) => new Step('weld', (m) => weldStep(m, i, j))),
   fc.constant(null).map(() => new Step('triangulate-all', (m) => ({ name: 'triangulate-all', refusal: null, apply: () => void triangulateMesh(m, { record: false }) }))),
   fc.constantFrom<SubdivisionScheme>('loop', 'catmull-clark', 'butterfly', 'sqrt3').map(
     (scheme) => new Step(`subdivide ${scheme}`, (m) => operationStep(m, `subdivide ${scheme}`, cannotSubdivide(m, scheme), () => subdivide(m, scheme, 1))),
@@ -187,10 +211,10 @@ export const editCommands: Array<fc.Arbitrary<Step>> = [
   fraction.map((share) => new Step('decimate', (m) => decimateStep(m, share))),
 ];
 
-/** A step on the `k`-th live edge or face (`kind`), asking `can` first. */
+/** A step on the `k`-th live edge, face or vertex (`kind`), asking `can` first. */
 function elementStep(
   mesh: HalfedgeMesh,
-  kind: 'e' | 'f',
+  kind: 'e' | 'f' | 'v',
   k: number,
   name: string,
   can: (mesh: HalfedgeMesh, id: number) => string | null,
@@ -200,9 +224,18 @@ function elementStep(
   return id === -1 ? null : { name: `${name} ${kind}${id}`, refusal: can(mesh, id), apply: () => edit(mesh, id) };
 }
 
-/** The `k`-th live edge (`e`) or face (`f`), modulo their count, or -1 when there is none. */
-export function elementOf(mesh: HalfedgeMesh, kind: 'e' | 'f', k: number): number {
-  return nth(kind === 'e' ? mesh.edges() : mesh.faces(), k);
+/** The `k`-th live edge (`e`), face (`f`) or vertex (`v`), modulo their count, or -1 when there is none. */
+export function elementOf(mesh: HalfedgeMesh, kind: 'e' | 'f' | 'v', k: number): number {
+  return nth(kind === 'e' ? mesh.edges() : kind === 'f' ? mesh.faces() : mesh.vertices(), k);
+}
+
+/** A weld of the `i`-th and `j`-th boundary edges, asking `canWeldEdges` first. */
+function weldStep(mesh: HalfedgeMesh, i: number, j: number): Plan {
+  const boundary = [...mesh.edges()].filter((e) => mesh.heFace[2 * e] === -1 || mesh.heFace[2 * e + 1] === -1);
+  if (boundary.length < 2) return null;
+  const e1 = boundary[i % boundary.length]!;
+  const e2 = boundary[j % boundary.length]!;
+  return { name: `weld e${e1} e${e2}`, refusal: canWeldEdges(mesh, e1, e2), apply: () => weldEdges(mesh, e1, e2) };
 }
 
 function splitFaceStep(mesh: HalfedgeMesh, k: number, i: number, j: number): Plan {
