@@ -326,12 +326,13 @@ test.describe('frame selection', () => {
   async function spanAfterFraming(page: import('@playwright/test').Page, element: string, neighbours: string[]): Promise<number> {
     await page.evaluate((name) => window.halfedgeLab.select(name), element);
     await page.keyboard.press('z');
-    await page.waitForTimeout(200);
-    const points = await page.evaluate((names) => names.map((n) => window.halfedgeLab.screenPosition(n)), neighbours);
+    // the view settles on the selection within a few frames (later on a busy machine): wait for every neighbour to be in it
+    const positions = () => page.evaluate((names) => names.map((n) => window.halfedgeLab.screenPosition(n)), neighbours);
+    await expect.poll(async () => (await positions()).every((p) => p.visible), { message: `${element}'s neighbours in view` }).toBe(true);
+    const points = await positions();
     const view = (await page.locator('#viewport').boundingBox())!;
     const xs = points.map((p) => p.x);
     const ys = points.map((p) => p.y);
-    expect(points.every((p) => p.visible)).toBe(true);
     return Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys)) / Math.min(view.width, view.height);
   }
 
