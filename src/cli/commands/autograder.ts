@@ -102,7 +102,8 @@ export const autograderCommand: Command = {
     }
     const points = exercises.reduce((sum, e) => sum + e.entry.points, 0);
     const tests = exercises.reduce((sum, e) => sum + checkNames(e.exercise).length, 0);
-    console.log(`wrote ${out}: ${exercises.length} exercises, ${tests} tests, ${Math.round(points * 100) / 100} points (the assignment's total on Gradescope)`);
+    const count = (n: number, what: string) => `${n} ${what}${n === 1 ? '' : 's'}`;
+    console.log(`wrote ${out}: ${count(exercises.length, 'exercise')}, ${count(tests, 'test')}, ${count(Math.round(points * 100) / 100, 'point')} (the assignment's total on Gradescope)`);
     return 0;
   },
 };
