@@ -1,6 +1,6 @@
 /**
  * The program inside a course's autograder zip, bundled with everything it needs into one ES
- * module for Node ≥ 20 (`grader.js`, by `vite.grader.config.ts`). `run_autograder` runs it with
+ * module for Node ≥ 20 (`grader.mjs`, by `vite.grader.config.ts`). `run_autograder` runs it with
  * no network: it grades `$AUTOGRADER_ROOT/submission/` (default root `/autograder`) against the
  * `course.json` beside it and writes `$AUTOGRADER_ROOT/results/results.json`. Started again as a
  * worker thread, the same file is the sandbox each solution runs in.

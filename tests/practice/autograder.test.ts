@@ -110,6 +110,9 @@ describe('autograder: a course in a box', () => {
     files = readZip(readFileSync(join(folder, 'autograder.zip')));
     // unpacked as Gradescope does, into ROOT/source, with the modes the zip gives
     root = join(folder, 'root');
+    // a package.json around it that says CommonJS: the grader is a module all the same
+    mkdirSync(root);
+    writeFileSync(join(root, 'package.json'), '{ "type": "commonjs" }\n');
     for (const file of files) {
       const path = join(root, 'source', file.name);
       mkdirSync(dirname(path), { recursive: true });
@@ -147,21 +150,21 @@ describe('autograder: a course in a box', () => {
       'exercises/0-boundary-edges/exercise.json',
       'exercises/0-boundary-edges/reference.js',
       'exercises/0-boundary-edges/strip.off',
-      'grader.js',
+      'grader.mjs',
       'run_autograder',
       'setup.sh',
     ]);
     const mode = (name: string) => files.find((f) => f.name === name)!.mode;
     expect(mode('run_autograder')).toBe(0o100755);
     expect(mode('setup.sh')).toBe(0o100755);
-    expect(mode('grader.js')).toBe(0o100644);
+    expect(mode('grader.mjs')).toBe(0o100644);
     const course = JSON.parse(new TextDecoder().decode(files.find((f) => f.name === 'course.json')!.data));
     expect(course.exercises[0]).toEqual({ exercise: 'exercises/0-boundary-edges/exercise.json', file: 'boundary-edges.js', points: 3 });
     expect(course.exercises[1]).toEqual({ id: 'flip-edge', file: 'flip-edge.js', points: 5 });
   });
 
   it('bundles a grader that imports nothing but Node itself', () => {
-    const grader = new TextDecoder().decode(files.find((f) => f.name === 'grader.js')!.data);
+    const grader = new TextDecoder().decode(files.find((f) => f.name === 'grader.mjs')!.data);
     const imported = [...grader.matchAll(/^import\s[^'"]*["']([^'"]+)["']/gm)].map((m) => m[1]);
     expect(imported.length).toBeGreaterThan(0);
     expect(imported.every((name) => name.startsWith('node:'))).toBe(true);

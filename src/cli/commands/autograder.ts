@@ -5,7 +5,7 @@
  * ```
  * setup.sh          installs Node.js ≥ 20 when Gradescope builds the image (the only download)
  * run_autograder    runs the grader for each submission, with no network
- * grader.js         the grader and everything it needs, in one file (vite.grader.config.ts)
+ * grader.mjs        the grader and everything it needs, in one file (vite.grader.config.ts)
  * course.json       the course, an instructor's exercises pointing into exercises/
  * exercises/I-ID/   each instructor exercise: its .json, reference and fixture files
  * ```
@@ -22,7 +22,7 @@ import type { Command } from './index.js';
 /** Run once as root when Gradescope builds the autograder's image. */
 export const SETUP_SH = `#!/usr/bin/env bash
 # Gradescope runs this once, as root, when it builds the autograder's image (Ubuntu).
-# The grader needs Node.js 20 or later and nothing else (grader.js holds all its code),
+# The grader needs Node.js 20 or later and nothing else (grader.mjs holds all its code),
 # so Node.js is the one thing fetched. Ubuntu's own package is older (12 on 22.04, 18 on
 # 24.04): this takes the newest official Node.js 22 build and checks its SHA-256.
 set -euo pipefail
@@ -55,11 +55,11 @@ node --version
 /** Run by Gradescope for each submission. */
 export const RUN_AUTOGRADER = `#!/usr/bin/env bash
 # Gradescope runs this (copied to /autograder/run_autograder) for each submission, with no
-# network: grader.js grades the files in $AUTOGRADER_ROOT/submission/ against course.json
+# network: grader.mjs grades the files in $AUTOGRADER_ROOT/submission/ against course.json
 # and writes $AUTOGRADER_ROOT/results/results.json (the root is /autograder on Gradescope).
 set -eu
 export AUTOGRADER_ROOT="\${AUTOGRADER_ROOT:-/autograder}"
-exec node "$AUTOGRADER_ROOT/source/grader.js"
+exec node "$AUTOGRADER_ROOT/source/grader.mjs"
 `;
 
 export const autograderCommand: Command = {
@@ -75,7 +75,7 @@ export const autograderCommand: Command = {
     const entries: ZipEntry[] = [
       { name: 'setup.sh', data: text(SETUP_SH), mode: 0o755 },
       { name: 'run_autograder', data: text(RUN_AUTOGRADER), mode: 0o755 },
-      { name: 'grader.js', data: await graderBundle() },
+      { name: 'grader.mjs', data: await graderBundle() },
     ];
     // the course as the grader reads it: an instructor's exercise moved into exercises/
     const course: { exercises: CourseEntry[] } = { exercises: [] };
@@ -115,7 +115,7 @@ export const autograderCommand: Command = {
  */
 async function graderBundle(): Promise<Uint8Array> {
   if (extname(fileURLToPath(import.meta.url)) !== '.ts') {
-    const built = new URL('../../grader/grader.js', import.meta.url);
+    const built = new URL('../../grader/grader.mjs', import.meta.url);
     try {
       return readFileSync(built);
     } catch {
