@@ -14,7 +14,7 @@
  */
 import { dirname, join } from 'node:path';
 import { InvalidInputError, ParseError } from '../core/errors.js';
-import { exercises, findExercise, fixtureMesh } from '../core/practice/index.js';
+import { checkNames, exercises, findExercise, fixtureMesh } from '../core/practice/index.js';
 import { type LoadedExercise, loadExercise, readText } from './exercise-file.js';
 import { UsageError } from './io.js';
 
@@ -118,6 +118,10 @@ export function loadCourse(path: string): { course: Course; exercises: CourseExe
     const earlier = idOf.get(id);
     if (earlier !== undefined) bad(`the exercise "${id}" is already exercises[${earlier}]: each exercise once`);
     idOf.set(id, i);
+    const checks = checkNames(exercise.exercise).length;
+    if (Math.round(entry.points * 100) < checks) {
+      throw new UsageError(`${path}: exercises[${i}].points: ${entry.points} cannot be shared among the exercise's ${checks} checks in hundredths: give it ${checks / 100} or more`);
+    }
     for (const fixture of exercise.exercise.fixtures) {
       try {
         fixtureMesh(fixture, exercise.files);

@@ -266,6 +266,8 @@ describe('autograder: the course file', () => {
       expect(() => loadCourse(course)).toThrow(`${course}: exercises[1].exercise: cannot read ${join(folder, 'mine/strip.off')}: ENOENT`);
       copyFileSync(join(repo, 'docs/examples/boundary-edges/strip.off'), join(folder, 'mine/strip.off'));
       expect(() => loadCourse(course)).toThrow(`${course}: exercises[1].exercise: ${join(folder, 'mine/exercise.json')}: "../reference.js" must be beside the exercise file or in a folder below it`);
+      writeFileSync(course, JSON.stringify({ exercises: [{ id: 'flip-edge', file: 'a.js', points: 0.05 }] }));
+      expect(() => loadCourse(course)).toThrow(`${course}: exercises[0].points: 0.05 cannot be shared among the exercise's 10 checks in hundredths: give it 0.1 or more`);
       writeFileSync(course, '{ "exercises": [ }');
       expect(() => loadCourse(course)).toThrow(`${course}: not JSON: `);
     } finally {
