@@ -5,7 +5,7 @@
  * worker subpath.
  */
 import { execFileSync } from 'node:child_process';
-import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -23,6 +23,7 @@ function freshCheckout(): string {
   const files = run('git', ['ls-files', '--cached', '--others', '--exclude-standard', '-z'], root).split('\0').filter(Boolean);
   for (const file of files) {
     if (!existsSync(join(root, file))) continue; // deleted, not yet committed
+    if (file === 'node_modules') continue; // a symbolic link to the packages (not matched by node_modules/): linked below
     mkdirSync(join(checkout, file, '..'), { recursive: true });
     cpSync(join(root, file), join(checkout, file));
   }
@@ -95,6 +96,15 @@ describe('the packed package in a fresh project', () => {
     writeFileSync(join(project, 'cube.off'), 'OFF\n8 6 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n');
     const stats = JSON.parse(run(join(project, 'node_modules/.bin/halfedge-lab'), ['stats', 'cube.off', '--json'], project));
     expect(stats.mesh).toMatchObject({ vertices: 8, edges: 12, faces: 6, genus: 0, closed: true });
+  });
+
+  it('writes a course autograder with the grader built into the package', () => {
+    writeFileSync(join(project, 'COURSE.json'), JSON.stringify({ exercises: [{ id: 'flip-edge', file: 'flip-edge.js', points: 5 }] }));
+    const made = run(join(project, 'node_modules/.bin/halfedge-lab'), ['autograder', 'COURSE.json', '--out', 'autograder.zip'], project);
+    expect(made).toContain('wrote autograder.zip: 1 exercise, 10 tests, 5 points');
+    expect(existsSync(join(project, 'node_modules/halfedge-lab/dist/grader/grader.mjs'))).toBe(true);
+    const names = readFileSync(join(project, 'autograder.zip')).toString('latin1');
+    for (const name of ['setup.sh', 'run_autograder', 'grader.mjs', 'course.json']) expect(names).toContain(name);
   });
 
   it('bundles the worker subpath in a Vite app', () => {

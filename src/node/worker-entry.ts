@@ -3,7 +3,7 @@
  * (tests, `npm run cli`), an eval'd script that first registers the TypeScript loader the caller
  * runs under, then imports the `.ts` file.
  */
-import { extname } from 'node:path';
+import { basename, extname } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export interface WorkerEntry {
@@ -18,4 +18,10 @@ export function workerEntry(base: string, path: string): WorkerEntry {
   return extension === '.ts'
     ? { code: `import('tsx/esm/api').then(({ register }) => (register(), import(${JSON.stringify(file.href)})))`, eval: true }
     : { code: file, eval: false };
+}
+
+/** The caller's own module (`base`: its `import.meta.url`) started again as a worker: a bundle that is its own worker. */
+export function selfEntry(base: string): WorkerEntry {
+  const file = fileURLToPath(base);
+  return workerEntry(base, `./${basename(file, extname(file))}`);
 }

@@ -1,11 +1,9 @@
-import { dirname, resolve } from 'node:path';
-import { Worker } from 'node:worker_threads';
-import { InvalidInputError } from '../../core/errors.js';
-import { checkNames, type Exercise, findExercise, exercises, type GradeReport, gradeSolution, parseExercise, SolutionError } from '../../core/practice/index.js';
-import { type SandboxPort, sandboxRunner } from '../../workers/practice-runner.js';
-import { MEMORY_LIMIT_MB } from '../../workers/practice-sandbox.js';
+import { checkNames, type Exercise, exercises, type GradeReport, gradeSolution, SolutionError } from '../../core/practice/index.js';
+import { sandboxRunner } from '../../workers/practice-runner.js';
 import { workerEntry } from '../../node/worker-entry.js';
-import { parseOptions, readBytes, UsageError } from '../io.js';
+import { loadExercise, readText } from '../exercise-file.js';
+import { parseOptions, UsageError } from '../io.js';
+import { workerSandbox } from '../sandbox.js';
 import type { Command } from './index.js';
 
 
@@ -57,49 +55,4 @@ export function gradescopeRefused(exercise: Exercise, message: string) {
   return { score: 0, max_score: tests.length, output: message, tests };
 }
 
-/** A built-in exercise by id, or an instructor's exercise file with its reference and fixture files. */
-function loadExercise(arg: string): { exercise: Exercise; files: Map<string, Uint8Array> } {
-  const builtIn = findExercise(arg);
-  if (builtIn) return { exercise: builtIn, files: new Map() };
-  if (!arg.endsWith('.json')) {
-    throw new UsageError(`unknown exercise '${arg}' (built in: ${exercises.map((e) => e.id).join(', ')}; or give an exercise .json file)`);
-  }
-  let doc: unknown;
-  try {
-    doc = JSON.parse(readText(arg));
-  } catch (error) {
-    if (error instanceof UsageError) throw error;
-    throw new UsageError(`${arg}: not JSON: ${(error as Error).message}`);
-  }
-  const folder = dirname(arg);
-  const referencePath = (doc as { reference?: unknown })?.reference;
-  if (typeof referencePath !== 'string') throw new UsageError(`${arg}: exercise: "reference" must name the reference solution's .js file`);
-  try {
-    const exercise = parseExercise(doc, readText(resolve(folder, referencePath)));
-    const files = new Map(exercise.fixtures.filter((f) => f.file).map((f) => [f.file!, readBytes(resolve(folder, f.file!))]));
-    return { exercise, files };
-  } catch (error) {
-    if (error instanceof InvalidInputError) throw new UsageError(`${arg}: ${error.message}`);
-    throw error;
-  }
-}
-
-function readText(path: string): string {
-  return new TextDecoder().decode(readBytes(path));
-}
-
-const workerFile = workerEntry(import.meta.url, '../grade-worker');
-
-function openWorkerSandbox(): SandboxPort {
-  const worker = new Worker(workerFile.code, { eval: workerFile.eval, resourceLimits: { maxOldGenerationSizeMb: MEMORY_LIMIT_MB, maxYoungGenerationSizeMb: 32 }, stdout: true, stderr: true });
-  return {
-    post: (request) => worker.postMessage(request),
-    listen(onMessage, onFailure) {
-      worker.on('message', onMessage);
-      worker.on('error', (error: Error & { code?: string }) =>
-        onFailure(new Error(error.code === 'ERR_WORKER_OUT_OF_MEMORY' ? `it used more than ${MEMORY_LIMIT_MB} MB of memory` : error.message)),
-      );
-    },
-    terminate: () => void worker.terminate(),
-  };
-}
+const openWorkerSandbox = workerSandbox(workerEntry(import.meta.url, '../grade-worker'));

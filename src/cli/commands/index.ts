@@ -1,4 +1,5 @@
 /** The CLI's commands, by name. Each lives in its own file. */
+import { autograderCommand } from './autograder.js';
 import { convert } from './convert.js';
 import { cutCommand } from './cut.js';
 import { decimateCommand } from './decimate.js';
@@ -26,4 +27,5 @@ export const commands: Record<string, Command> = {
   smooth: smoothCommand,
   decimate: decimateCommand,
   grade: gradeCommand,
+  autograder: autograderCommand,
 };
