@@ -51,10 +51,11 @@ const schemeNames: Record<SubdivisionScheme, string> = {
   'catmull-clark': 'Catmull-Clark subdivision',
   butterfly: 'Modified Butterfly subdivision',
   sqrt3: '√3 subdivision',
+  linear: 'linear subdivision',
 };
 
 /** Phases of one level of each scheme (√3 adds two on the odd levels of an open mesh). */
-const schemePhases: Record<SubdivisionScheme, number> = { loop: 4, 'catmull-clark': 4, butterfly: 3, sqrt3: 3 };
+const schemePhases: Record<SubdivisionScheme, number> = { loop: 4, 'catmull-clark': 4, butterfly: 3, sqrt3: 3, linear: 3 };
 const CUT_PHASES = 6;
 
 export function operationLabel(request: OperationRequest): string {

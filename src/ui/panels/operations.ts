@@ -4,7 +4,7 @@
  * (Loop on a quad mesh; a flip on a boundary edge). The reasons come from the core's own
  * predicates, asked here on the page's copy of the mesh.
  */
-import type { HalfedgeMesh } from '../../core/index.js';
+import type { HalfedgeMesh, SubdivisionScheme } from '../../core/index.js';
 import type { CheckedOperation } from '../../workers/protocol.js';
 import { cannotEdit, cannotStart, type EditRequest, type OperationRequest } from '../../workers/operations.js';
 import { el, replace } from '../dom.js';
@@ -19,11 +19,12 @@ export interface OperationActions {
   setPlaneMode(mode: 'translate' | 'rotate'): void;
 }
 
-const schemes: Array<{ scheme: 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3'; label: string }> = [
+const schemes: Array<{ scheme: SubdivisionScheme; label: string }> = [
   { scheme: 'loop', label: 'Loop' },
   { scheme: 'catmull-clark', label: 'Catmull-Clark' },
   { scheme: 'butterfly', label: 'Butterfly' },
   { scheme: 'sqrt3', label: '√3' },
+  { scheme: 'linear', label: 'Linear' },
 ];
 
 type EditKind = EditRequest['kind'];
