@@ -26,7 +26,7 @@
  */
 export { collapseEdge, canCollapseEdge, type CollapseOptions } from './collapse.js';
 export { halfedgeFromTo } from './find.js';
-export { canFlipEdge, flipEdge } from './flip.js';
+export { canFlipEdge, flipEdge, flipEdgeAt } from './flip.js';
 export { canMergeFaces, mergeFaces, type MergeResult } from './merge.js';
 export { canPokeFace, pokeFace } from './poke.js';
 export {
