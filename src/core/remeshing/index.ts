@@ -127,7 +127,7 @@ function* remeshingPhases(mesh: HalfedgeMesh, settings: RemeshingSettings, listI
       name: `collapse short edges (${of})`,
       explanation:
         'Every edge shorter than 4/5 L shrinks to a point, unless that would break the surface (the link condition), turn a triangle over, or make an edge longer than 4/3 L. ' +
-        'Two inside vertices merge at their midpoint, while an edge that reaches the boundary keeps its boundary end, so the rim keeps its shape.',
+        'Two inside vertices merge at their midpoint (or at one end, where the midpoint is too far from a neighbour), while an edge that reaches the boundary keeps its boundary end, so the rim keeps its shape.',
       ...idsOf(w),
       ...(survivors ? { moved: { vertices: Int32Array.from(new Set(survivors)).filter((v) => !mesh.vDeleted[v]).sort() } } : {}),
     };
