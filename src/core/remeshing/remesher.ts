@@ -54,6 +54,12 @@ const MAX_SPLIT_PASSES = 30;
 /** Passes of collapses at most (the later ones go over the edges around the last pass's collapses). */
 const MAX_COLLAPSE_PASSES = 4;
 /**
+ * The first pass of collapses takes the short edges in this many classes of length, the shortest
+ * first (CGAL takes them one by one, the shortest first): on the benchmark's torus the shortest
+ * edge left went from 0.41 L to 0.46 L, and on the icosphere from 0.51 L to 0.52 L.
+ */
+const LENGTH_CLASSES = 4;
+/**
  * A rim vertex is on a straight stretch when the sine of the turn between its two rim edges is
  * below this: a midpoint a split made turns by rounding errors only (about 1e-16).
  */
@@ -184,9 +190,10 @@ export class Remesher {
    * triangle over and makes no edge longer than 4/3 L. `survivors`, given, gets the vertex each
    * collapse kept (it moved).
    *
-   * The short edges are listed in one pass over the edges and collapsed in id order; a collapse
-   * can leave a short edge at the merged vertex, or let a refused neighbour go, so the short
-   * edges around each survivor make the list of another pass, while passes collapse anything.
+   * The short edges are listed in one pass over the edges and collapsed the shortest first (in
+   * `LENGTH_CLASSES`); a collapse can leave a short edge at the merged vertex, or let a refused
+   * neighbour go, so the short edges around each survivor make the list of another pass, while
+   * passes collapse anything.
    */
   collapseShortEdges(w: PointerWriter, survivors: number[] | null): void {
     const mesh = this.mesh;
@@ -199,6 +206,14 @@ export class Remesher {
     const listed = new Int32Array(E);
     let count = 0;
     for (let e = 0; e < E; e++) if (!eDeleted[e] && this.lengthSquared(e) < this.shortSquared) list[count++] = e;
+    // the shortest first, in classes of length, each class in id order (a stable counting sort):
+    // sorted by length alone, the collapses jumped about memory and took twice as long
+    const classes = new Int32Array(LENGTH_CLASSES + 1);
+    const classOf = (e: number) => Math.min(LENGTH_CLASSES - 1, Math.floor(Math.sqrt(this.lengthSquared(e) / this.shortSquared) * LENGTH_CLASSES));
+    for (let i = 0; i < count; i++) classes[classOf(list[i]) + 1]++;
+    for (let k = 0; k < LENGTH_CLASSES; k++) classes[k + 1] += classes[k];
+    for (let i = 0; i < count; i++) next[classes[classOf(list[i])]++] = list[i];
+    [list, next] = [next, list];
     for (let pass = 1; pass <= MAX_COLLAPSE_PASSES && count > 0; pass++) {
       let nextCount = 0;
       for (let i = 0; i < count; i++) {
