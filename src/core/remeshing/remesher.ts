@@ -6,19 +6,20 @@
  *    through the new vertex; passes repeat until no edge is that long.
  * 2. `collapseShortEdges`: an edge shorter than 4/5 L shrinks to a point, its midpoint, unless that
  *    would break the surface (`canCollapseEdge`), fold a triangle over (`keepsOrientation`), or
- *    make an edge longer than 4/3 L (which the next split would undo). Where the midpoint is too
- *    far from a neighbour, one end may not be, and the edge shrinks onto that end (as CGAL's
- *    remeshing always does): on the benchmark's torus that left a third as many edges under
- *    0.6 L after the first iteration, and the shortest edge at the end went from 0.34 L to 0.45 L. Between them, 4/5 L and 4/3 L leave no
- *    gap where an edge would go back and forth: the halves of an edge just over 4/3 L are just
- *    over 2/3 L, and a collapse makes no edge over 4/3 L.
+ *    make an edge longer than 4/3 L. That last check keeps the collapses from undoing the splits:
+ *    the halves of an edge just over 4/3 L are just over 2/3 L, short enough to collapse, but
+ *    collapsing one would bring the long edge back. Where the midpoint is too far from a
+ *    neighbour, one end may not be, and the edge shrinks onto that end (as CGAL's remeshing
+ *    always does): on the benchmark's torus that left a third as many edges under 0.6 L after the
+ *    first iteration, and the shortest edge at the end went from 0.34 L to 0.45 L.
  * 3. `flipToValence`: an edge between two triangles is flipped when that brings its two ends and
  *    the two opposite corners nearer the valence of a regular mesh (6 inside, 4 on the boundary),
  *    summed over the four, where `canFlipEdge` allows it, neither new triangle is turned over, and
  *    the new edge is no longer than 4/3 L. That last check is ours, as the collapses': without it
  *    the flips made edges of up to 2.3 L, which the gentle smoothing left at 2 L after three
  *    iterations (with it the longest edge stays under 1.4 L, and 85% of the edges within
- *    4/5 … 4/3 L against 83%, on the benchmark's icosphere and torus).
+ *    4/5 … 4/3 L against 83%, on the benchmark's smaller icosphere and torus, 20k triangles and
+ *    10k quads).
  * 4. `smoothAndProject`: every vertex moves a fifth of the way towards the centroid of its
  *    neighbours, but only in its tangent plane (the area-weighted normal's), all new places worked
  *    out from the old ones first; then each goes to the nearest point of the input surface
@@ -49,7 +50,7 @@ import { NearestTriangle } from './nearest-triangle.js';
 
 /** How far a vertex moves towards its neighbours' centroid in one smoothing step. */
 export const TANGENTIAL_STEP = 0.2;
-/** Passes of splits at most: each halves the longest edges, so 30 shrink them a billionfold. */
+/** Passes of splits at most: each splits in two every edge then too long, so 30 shorten an edge a billionfold. */
 const MAX_SPLIT_PASSES = 30;
 /** Passes of collapses at most (the later ones go over the edges around the last pass's collapses). */
 const MAX_COLLAPSE_PASSES = 4;
@@ -83,7 +84,7 @@ export class Remesher {
   private readonly point = new Float64Array(3);
   /**
    * The mesh's positions, read once per step (and again after the splits make room): the mesh's
-   * getter looks the attribute up by name, which cost a tenth of the run when asked at every edge.
+   * getter looks the attribute up by name, which took 6% of the run when asked at every edge.
    */
   private p: Float64Array;
 
