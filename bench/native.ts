@@ -12,7 +12,10 @@
  * memory is each process's largest resident set. Decimation also runs meshoptimizer's `simplify`
  * (WebAssembly) to the same face count, and for ours and meshoptimizer's says how far the result
  * strays from the input (`distance`: the largest and the mean distance from the input's vertices
- * to the result's surface).
+ * to the result's surface). Remeshing runs CGAL's `isotropic_remeshing` and ours to the target the
+ * issue states (the input's mean edge length times 0.7 on the icosphere, 0.5 on the torus, whose
+ * quads both sides triangulate alike first, untimed), 3 iterations, and gives each side's edge
+ * lengths after (`spread`: min, mean, max, and the share within 4/5 … 4/3 of the target).
  *
  * Without the native peers set up (`run.sh setup`), it says so and prints no native rows.
  */
@@ -26,12 +29,14 @@ const here = dirname(fileURLToPath(import.meta.url));
 const peersDir = resolve(process.env.NATIVE_PEERS ?? join(here, '../../shared/native-peers'));
 const peersEnv = process.env.NATIVE_PEERS_ENV ?? '/tmp/native-peers';
 
-type NativeOp = 'build' | 'read' | 'loop' | 'cc' | 'clip_cap' | 'decimate';
+type NativeOp = 'build' | 'read' | 'loop' | 'cc' | 'clip_cap' | 'decimate' | 'remesh';
 
 /** One comparison: an operation of `run.sh` on one of its meshes. */
 interface NativeCase {
   op: NativeOp;
   mesh: string;
+  /** Remeshing: the target edge length as a multiple of the input's mean (`REMESH_TARGET_FACTOR`). */
+  factor?: number;
 }
 
 /** The operations whose default call in Node hands work to a helper thread: also run on one thread. */
@@ -48,6 +53,8 @@ const allCases: NativeCase[] = [
   { op: 'cc', mesh: 'torus_1m' },
   { op: 'clip_cap', mesh: 'ico_1280k' },
   { op: 'decimate', mesh: 'ico_1280k' },
+  { op: 'remesh', mesh: 'ico_80k', factor: 0.7 },
+  { op: 'remesh', mesh: 'torus_100k', factor: 0.5 },
 ];
 
 /** What one process measured: ours, meshoptimizer's, or a line of `run.sh`. */
@@ -60,6 +67,28 @@ interface Measured {
   outFaces: number;
   /** Decimation, ours and meshoptimizer's: how far the result strays from the input (`surface-distance.mjs`). */
   distance?: { max: number; mean: number };
+  /** Remeshing: the result's edge lengths, and the share within 4/5 … 4/3 of the target. */
+  spread?: Spread;
+}
+
+interface Spread {
+  min: number;
+  mean: number;
+  max: number;
+  within: number;
+}
+
+/** The edge lengths CGAL's note gives after remeshing ("length min … mean … max …, within 4/5..4/3 of the target …"). */
+function spreadOfNote(note: string | undefined): Spread | undefined {
+  const match = /length min (\S+) mean (\S+) max (\S+), within 4\/5\.\.4\/3 of the target (\S+);/.exec(note ?? '');
+  if (!match) return undefined;
+  const [min, mean, max, within] = match.slice(1).map(Number);
+  return { min: min!, mean: mean!, max: max!, within: within! };
+}
+
+/** The environment of both sides of a case: remeshing's target factor. */
+function caseEnvironment(c: NativeCase): NodeJS.ProcessEnv {
+  return c.factor === undefined ? process.env : { ...process.env, REMESH_TARGET_FACTOR: String(c.factor) };
 }
 
 /** Whether `run.sh` can run without installing anything. */
@@ -72,13 +101,21 @@ function meshPath(mesh: string): string {
 }
 
 function runNatives(c: NativeCase): Measured[] {
-  const output = execFileSync(join(peersDir, 'run.sh'), [c.op, c.mesh], { encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'], maxBuffer: 1 << 20 });
+  const output = execFileSync(join(peersDir, 'run.sh'), [c.op, c.mesh], {
+    encoding: 'utf8',
+    stdio: ['ignore', 'pipe', 'ignore'],
+    maxBuffer: 1 << 20,
+    env: caseEnvironment(c),
+  });
   return output
     .trim()
     .split('\n')
-    .map((line) => JSON.parse(line) as { lib: string; median_ms?: number; self_maxrss_kb?: number; out_faces?: number; skip?: string })
+    .map((line) => JSON.parse(line) as { lib: string; median_ms?: number; self_maxrss_kb?: number; out_faces?: number; skip?: string; note?: string })
     .filter((line) => line.skip === undefined && line.median_ms !== undefined)
-    .map((line) => ({ lib: line.lib, ms: line.median_ms!, peakMB: Math.round(line.self_maxrss_kb! / 1024), outFaces: line.out_faces! }));
+    .map((line) => {
+      const spread = c.op === 'remesh' ? spreadOfNote(line.note) : undefined;
+      return { lib: line.lib, ms: line.median_ms!, peakMB: Math.round(line.self_maxrss_kb! / 1024), outFaces: line.out_faces!, ...(spread ? { spread } : {}) };
+    });
 }
 
 /**
@@ -90,6 +127,7 @@ function runOurs(c: NativeCase, file: string, lib: 'ours' | 'ours-one-thread' | 
     encoding: 'utf8',
     maxBuffer: 1 << 20,
     stdio: ['ignore', 'pipe', 'inherit'],
+    env: caseEnvironment(c),
   });
   return JSON.parse(output.trim().split('\n').at(-1)!) as Measured;
 }
@@ -145,7 +183,7 @@ export async function runNativeComparison(args: string[]): Promise<void> {
     const best = natives.reduce((a, b) => (b.ms < a.ms ? b : a));
     const bestMemory = Math.min(...natives.map((p) => p.peakMB));
     const result = {
-      case: `native-${c.op}-${c.mesh}`,
+      case: `native-${c.op}-${c.mesh}${c.factor === undefined ? '' : `-x${c.factor}`}`,
       size: ours!.inFaces!,
       ms: ours!.ms,
       peer: best.lib,
@@ -158,6 +196,7 @@ export async function runNativeComparison(args: string[]): Promise<void> {
       ...(oneThread ? { oneThread: { ms: oneThread.ms, ratio: round(oneThread.ms / best.ms, 3), peakMB: oneThread.peakMB } } : {}),
       outFaces: ours!.outFaces,
       ...(ours!.distance ? { distance: ours!.distance } : {}),
+      ...(ours!.spread ? { spread: ours!.spread } : {}),
     };
     console.log(json ? JSON.stringify(result) : row(result));
   }
@@ -180,6 +219,7 @@ function row(r: {
   peers: Array<Measured & { ratio: number }>;
   oneThread?: { ms: number; ratio: number; peakMB: number };
   distance?: Measured['distance'];
+  spread?: Spread;
 }): string {
   return [
     r.case.padEnd(30),
@@ -190,10 +230,17 @@ function row(r: {
     r.ratio.toFixed(2).padStart(7),
     String(r.peakMB).padStart(6),
     String(r.peerPeakMB).padStart(7),
-    '  ' + r.peers.map((p) => `${p.lib} ${p.ms.toFixed(0)} ms ${p.peakMB} MB (×${p.ratio.toFixed(2)})${strays(p)}`).join(', '),
+    '  ' + r.peers.map((p) => `${p.lib} ${p.ms.toFixed(0)} ms ${p.peakMB} MB (×${p.ratio.toFixed(2)})${strays(p)}${lengths(p)}`).join(', '),
     r.distance ? `; ours${strays(r)}` : '',
+    r.spread ? `; ours${lengths(r)}` : '',
     r.oneThread ? `; ours on one thread ${r.oneThread.ms.toFixed(0)} ms ${r.oneThread.peakMB} MB (×${r.oneThread.ratio.toFixed(2)})` : '',
   ].join('');
+}
+
+/** " edges min … mean … max …, within 4/5…4/3 L …" for a side that remeshed, else nothing. */
+function lengths(m: { spread?: Spread }): string {
+  const s = m.spread;
+  return s ? ` edges min ${s.min} mean ${s.mean} max ${s.max}, within 4/5…4/3 L ${s.within}` : '';
 }
 
 /** " strays max … mean …" for a side that measured it, else nothing. */

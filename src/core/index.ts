@@ -32,3 +32,4 @@ export * from './cut/index.js';
 export * from './subdivision/index.js';
 export * from './smoothing/index.js';
 export * from './decimation/index.js';
+export * from './remeshing/index.js';

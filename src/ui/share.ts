@@ -48,9 +48,9 @@ export function encodeViewState(state: ViewState): string {
 }
 
 /** The kinds of request that are operations; any other is an edit. */
-const operationKinds = new Set(['subdivide', 'cut', 'smooth', 'decimate']);
+const operationKinds = new Set(['subdivide', 'cut', 'smooth', 'decimate', 'remesh']);
 /** The operations whose settings a request keeps under `options`. */
-const withOptions = new Set(['smooth', 'decimate']);
+const withOptions = new Set(['smooth', 'decimate', 'remesh']);
 
 /**
  * One step as text: its kind, then its settings as `name:value` (a list of numbers joined by

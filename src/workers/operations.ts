@@ -1,5 +1,6 @@
 /**
- * What the session can be asked to do: the stepped operations (subdivision, the plane cut) and
+ * What the session can be asked to do: the stepped operations (subdivision, the plane cut,
+ * smoothing, decimation, remeshing) and
  * the local edits, as plain requests that cross the worker boundary, each with the sentence that
  * says why it does not apply (so the page can disable a button with that sentence as its tooltip).
  */
@@ -42,6 +43,7 @@ import {
 import { type KeepSide, planeCut } from '../core/cut/index.js';
 import { cannotDecimate, type DecimationOptions, decimation } from '../core/decimation/index.js';
 import { type HalfedgeMesh, type Operation, TopologyError } from '../core/index.js';
+import { cannotRemesh, remeshing, type RemeshingOptions } from '../core/remeshing/index.js';
 import { cannotSmooth, smoothing, type SmoothingOptions } from '../core/smoothing/index.js';
 import { cannotSubdivide, type SubdivisionScheme, subdivisionOperation } from '../core/subdivision/index.js';
 
@@ -50,7 +52,8 @@ export type OperationRequest =
   | { kind: 'subdivide'; scheme: SubdivisionScheme; level?: number }
   | { kind: 'cut'; plane: [number, number, number, number]; keep?: KeepSide; cap?: boolean }
   | { kind: 'smooth'; options: SmoothingOptions }
-  | { kind: 'decimate'; options: DecimationOptions };
+  | { kind: 'decimate'; options: DecimationOptions }
+  | { kind: 'remesh'; options: RemeshingOptions };
 
 export type EditRequest =
   | { kind: 'flip-edge'; edge: number }
@@ -79,10 +82,11 @@ const schemeNames: Record<SubdivisionScheme, string> = {
   'catmull-clark': 'Catmull-Clark subdivision',
   butterfly: 'Modified Butterfly subdivision',
   sqrt3: '√3 subdivision',
+  linear: 'linear subdivision',
 };
 
 /** Phases of one level of each scheme (√3 adds two on the odd levels of an open mesh). */
-const schemePhases: Record<SubdivisionScheme, number> = { loop: 4, 'catmull-clark': 4, butterfly: 3, sqrt3: 3 };
+const schemePhases: Record<SubdivisionScheme, number> = { loop: 4, 'catmull-clark': 4, butterfly: 3, sqrt3: 3, linear: 3 };
 const CUT_PHASES = 6;
 
 export function operationLabel(request: OperationRequest): string {
@@ -99,6 +103,11 @@ export function operationLabel(request: OperationRequest): string {
     }
     case 'decimate':
       return request.options.targetFaces !== undefined ? `decimate to ${request.options.targetFaces} faces` : 'decimate';
+    case 'remesh': {
+      const { targetEdgeLength, iterations = 3 } = request.options;
+      const target = targetEdgeLength !== undefined ? ` to edges of ${+targetEdgeLength.toPrecision(4)}` : '';
+      return `isotropic remeshing${target}, ${iterations} iteration${iterations === 1 ? '' : 's'}`;
+    }
   }
 }
 
@@ -115,6 +124,8 @@ export function cannotStart(mesh: HalfedgeMesh, request: OperationRequest): stri
       return cannotSmooth(mesh, request.options);
     case 'decimate':
       return cannotDecimate(mesh, request.options);
+    case 'remesh':
+      return cannotRemesh(mesh, request.options);
   }
 }
 
@@ -142,6 +153,9 @@ export function startOperation(mesh: HalfedgeMesh, request: OperationRequest): {
     case 'decimate':
       // as many batches as it takes
       return { operation: decimation(mesh, request.options), phases: null };
+    case 'remesh':
+      // split, collapse, flip, smooth and project: four phases per iteration
+      return { operation: remeshing(mesh, request.options), phases: 4 * (request.options.iterations ?? 3) };
   }
 }
 

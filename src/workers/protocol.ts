@@ -200,12 +200,12 @@ export interface SnapshotDetails {
   problems: Violation[];
   /**
    * Why an operation that checks every face does not apply to this mesh (null: it does): each
-   * subdivision scheme, cotangent smoothing and decimation (they need triangles).
+   * subdivision scheme, cotangent smoothing, decimation and remeshing (they need triangles).
    */
   unavailable: Record<CheckedOperation, string | null>;
 }
 
-export type CheckedOperation = SubdivisionScheme | 'cotan' | 'decimate';
+export type CheckedOperation = SubdivisionScheme | 'cotan' | 'decimate' | 'remesh';
 
 export interface ProgressEvent {
   label: string;

@@ -16,6 +16,7 @@ import {
   validate,
   validateChange,
 } from '../core/index.js';
+import { cannotRemesh } from '../core/remeshing/index.js';
 import { cannotSmooth } from '../core/smoothing/index.js';
 import { cannotSubdivide, subdivisionSchemes } from '../core/subdivision/index.js';
 import type { SnapshotDetails } from './protocol.js';
@@ -72,5 +73,6 @@ function unavailable(mesh: HalfedgeMesh): SnapshotDetails['unavailable'] {
     ...reasons,
     cotan: cannotSmooth(mesh, { method: 'cotan' }),
     decimate: cannotDecimate(mesh),
+    remesh: cannotRemesh(mesh),
   } as SnapshotDetails['unavailable'];
 }

@@ -5,6 +5,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { buildMesh, cannotDecimate, collapseEdge, diffPointers, triangulateMesh, disk, type HalfedgeMesh, phaseDiff, pointerCopy, torus, uvSphere } from '../../src/index.js';
+import { cannotRemesh } from '../../src/core/remeshing/index.js';
 import { cannotSubdivide, subdivisionSchemes } from '../../src/core/subdivision/index.js';
 import { type OperationRequest, startOperation } from '../../src/workers/operations.js';
 
@@ -31,12 +32,15 @@ const requests: OperationRequest[] = [
   { kind: 'cut', plane: [0.3, 0.2, 1, 0.1], cap: true },
   { kind: 'decimate', options: { targetFaces: 40 } },
   { kind: 'smooth', options: { method: 'laplacian', iterations: 2 } },
+  { kind: 'remesh', options: { iterations: 2 } },
+  { kind: 'remesh', options: { iterations: 1, targetEdgeLength: 0.2 } },
 ];
 
-/** Whether an operation applies to a mesh: Loop, √3, Butterfly and decimation need triangles. */
+/** Whether an operation applies to a mesh: Loop, √3, Butterfly, decimation and remeshing need triangles. */
 function applies(mesh: HalfedgeMesh, request: OperationRequest): boolean {
   if (request.kind === 'subdivide') return cannotSubdivide(mesh, request.scheme) === null;
   if (request.kind === 'decimate') return cannotDecimate(mesh) === null;
+  if (request.kind === 'remesh') return cannotRemesh(mesh) === null;
   return true;
 }
 
@@ -45,7 +49,7 @@ const cases = meshes.flatMap(([name, make]) => requests.filter((request) => appl
 describe('the pointer diff of a phase', () => {
   it('is checked on every stepped operation', () => {
     expect(new Set(cases.map(([, request]) => request.kind === 'subdivide' ? request.scheme : request.kind))).toEqual(
-      new Set([...subdivisionSchemes, 'cut', 'decimate', 'smooth']),
+      new Set([...subdivisionSchemes, 'cut', 'decimate', 'smooth', 'remesh']),
     );
   });
 

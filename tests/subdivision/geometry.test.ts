@@ -3,7 +3,9 @@ import { annulus, cube, disk, grid, type HalfedgeMesh, meshStats, type PolygonSo
 import { subdivide, type SubdivisionScheme } from '../../src/core/subdivision/index.js';
 import { at, flower, meshOf, pyramid, stepLevel, triangulate } from './helpers.js';
 
-const schemes: SubdivisionScheme[] = ['loop', 'catmull-clark', 'butterfly', 'sqrt3'];
+const schemes: SubdivisionScheme[] = ['loop', 'catmull-clark', 'butterfly', 'sqrt3', 'linear'];
+/** The schemes that take any polygons (the others need triangles). */
+const anyPolygons = (scheme: SubdivisionScheme) => scheme === 'catmull-clark' || scheme === 'linear';
 
 /** The halfedge from v to w (throws when they are not neighbours). */
 function halfedgeBetween(mesh: HalfedgeMesh, v: number, w: number): number {
@@ -177,7 +179,7 @@ describe('√3 subdivision', () => {
 
 describe('every scheme', () => {
   const inputs = (scheme: SubdivisionScheme): PolygonSoup[] =>
-    scheme === 'catmull-clark' ? [flower(), pyramid(), torus(5, 4), annulus(6)] : [uvSphere(5, 6), disk(2), triangulate(torus(5, 4))];
+    anyPolygons(scheme) ? [flower(), pyramid(), torus(5, 4), annulus(6)] : [uvSphere(5, 6), disk(2), triangulate(torus(5, 4))];
 
   it.each(schemes)('%s: commutes with an affine map', (scheme) => {
     const next = seededRandom(11);
@@ -203,7 +205,7 @@ describe('every scheme', () => {
 
   it.each(schemes)('%s: keeps a planar mesh in its plane', (scheme) => {
     const plane = (x: number, y: number) => 0.3 * x - 0.2 * y + 0.1;
-    const soup = scheme === 'catmull-clark' ? grid(3, 3, true) : disk(3);
+    const soup = anyPolygons(scheme) ? grid(3, 3, true) : disk(3);
     const mesh = meshOf(soup);
     for (let v = 0; v < mesh.nVertices; v++) mesh.positions[3 * v + 2] = plane(...(at(mesh, v) as [number, number]));
     subdivide(mesh, scheme, 3);
@@ -226,7 +228,7 @@ describe('every scheme', () => {
   });
 
   it.each(schemes)('%s: blends a colour of three floats with the same weights as positions', (scheme) => {
-    const mesh = meshOf(scheme === 'catmull-clark' ? flower() : disk(2));
+    const mesh = meshOf(anyPolygons(scheme) ? flower() : disk(2));
     const color = mesh.vertexAttributes.add('color', 'float32', 3);
     color.data.set(mesh.positions.subarray(0, 3 * mesh.nVertices));
     subdivide(mesh, scheme, 2);
@@ -235,7 +237,7 @@ describe('every scheme', () => {
   });
 
   it.each(schemes)('%s: copies labels to new vertices and face attributes to the faces cut from a face', (scheme) => {
-    const mesh = meshOf(scheme === 'catmull-clark' ? flower() : disk(2));
+    const mesh = meshOf(anyPolygons(scheme) ? flower() : disk(2));
     const V = mesh.nVertices;
     const F = mesh.nFaces;
     const label = mesh.vertexAttributes.add('label', 'int32', 1);

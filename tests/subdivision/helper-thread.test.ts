@@ -75,8 +75,8 @@ function bothWays(make: () => HalfedgeMesh, scheme: Scheme, levels: number) {
 
 afterAll(() => useHelperThread(null));
 
-/** The schemes a helper takes the topology of: Butterfly's is Loop's. */
-type Scheme = 'loop' | 'butterfly' | 'catmull-clark';
+/** The schemes a helper takes the topology of: Butterfly's is Loop's, linear subdivision's Catmull-Clark's. */
+type Scheme = 'loop' | 'butterfly' | 'catmull-clark' | 'linear';
 
 const fixtures: Array<[string, Scheme, () => HalfedgeMesh]> = [
   ['a closed sphere of triangles', 'loop', () => withAttributes(triangulate(uvSphere(8, 12)))],
@@ -88,6 +88,7 @@ const fixtures: Array<[string, Scheme, () => HalfedgeMesh]> = [
   ['a torus of quads in several chunks', 'catmull-clark', () => withAttributes(torus(160, 120))],
   ['mixed polygons with a boundary', 'catmull-clark', () => withAttributes(flower())],
   ['a closed sphere of triangles and quads', 'catmull-clark', () => withAttributes(uvSphere(8, 12))],
+  ['mixed polygons with a boundary', 'linear', () => withAttributes(flower())],
 ];
 
 describe.each(fixtures)('on %s, %s straight through', (_, scheme, make) => {

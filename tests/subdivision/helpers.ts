@@ -53,7 +53,8 @@ export function expectedCounts(mesh: HalfedgeMesh, scheme: SubdivisionScheme, le
     case 'loop':
     case 'butterfly':
       return [V + E, 2 * E + 3 * F, 4 * F];
-    case 'catmull-clark': {
+    case 'catmull-clark':
+    case 'linear': {
       const corners = [...mesh.halfedges()].filter((h) => mesh.heFace[h] !== -1).length;
       return [V + E + F, 2 * E + corners, corners];
     }

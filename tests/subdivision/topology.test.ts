@@ -53,14 +53,16 @@ const polygonFixtures: Array<[string, () => PolygonSoup]> = [
   ...triangleFixtures,
 ];
 
-const fixturesOf = (scheme: SubdivisionScheme) => (scheme === 'catmull-clark' ? polygonFixtures : triangleFixtures);
-const schemes: SubdivisionScheme[] = ['loop', 'catmull-clark', 'butterfly', 'sqrt3'];
+const anyPolygons = (scheme: SubdivisionScheme) => scheme === 'catmull-clark' || scheme === 'linear';
+const fixturesOf = (scheme: SubdivisionScheme) => (anyPolygons(scheme) ? polygonFixtures : triangleFixtures);
+const schemes: SubdivisionScheme[] = ['loop', 'catmull-clark', 'butterfly', 'sqrt3', 'linear'];
 
 const phaseNames: Record<SubdivisionScheme, string[]> = {
   loop: ['split every edge', 'cut the corners', 'place the edge points', 'move the old vertices'],
   'catmull-clark': ['add face points', 'split every edge at its edge point', 'connect the face points', 'move the old vertices'],
   butterfly: ['split every edge', 'cut the corners', 'place the edge points'],
   sqrt3: ['insert face points', 'flip the old edges', 'relax the old vertices'],
+  linear: ['add face points', 'split every edge at its edge point', 'connect the face points'],
 };
 
 describe.each(schemes)('%s subdivision', (scheme) => {
@@ -114,8 +116,8 @@ describe.each(schemes)('%s subdivision', (scheme) => {
         before = mesh.clone();
       }
     };
-    check(meshOf(scheme === 'catmull-clark' ? flower() : disk(2)));
-    check(meshOf(scheme === 'catmull-clark' ? torus(4, 3) : tetrahedron()));
+    check(meshOf(anyPolygons(scheme) ? flower() : disk(2)));
+    check(meshOf(anyPolygons(scheme) ? torus(4, 3) : tetrahedron()));
     if (scheme === 'sqrt3') check(meshOf(disk(2)), 1);
   });
 });
@@ -191,8 +193,9 @@ describe('preconditions', () => {
     expect(validate(mesh)).toEqual([]);
   });
 
-  it('lets Catmull-Clark take any polygons, and every scheme take triangles', () => {
+  it('lets Catmull-Clark and linear subdivision take any polygons, and every scheme take triangles', () => {
     expect(cannotSubdivide(meshOf(flower()), 'catmull-clark')).toBeNull();
+    expect(cannotSubdivide(meshOf(flower()), 'linear')).toBeNull();
     for (const scheme of schemes) expect(cannotSubdivide(meshOf(tetrahedron()), scheme)).toBeNull();
   });
 

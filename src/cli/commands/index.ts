@@ -4,6 +4,7 @@ import { convert } from './convert.js';
 import { cutCommand } from './cut.js';
 import { decimateCommand } from './decimate.js';
 import { gradeCommand } from './grade.js';
+import { remeshCommand } from './remesh.js';
 import { smoothCommand } from './smooth.js';
 import { stats } from './stats.js';
 import { subdivideCommand } from './subdivide.js';
@@ -26,6 +27,7 @@ export const commands: Record<string, Command> = {
   cut: cutCommand,
   smooth: smoothCommand,
   decimate: decimateCommand,
+  remesh: remeshCommand,
   grade: gradeCommand,
   autograder: autograderCommand,
 };

@@ -35,7 +35,7 @@ export function subdivideLoadedMesh(mesh: HalfedgeMesh, scheme: SubdivisionSchem
 
 export const subdivideCommand: Command = {
   usage: 'subdivide SCHEME IN OUT [--levels N]',
-  summary: `refine by Loop, Catmull-Clark, Butterfly or √3 (SCHEME: ${subdivisionSchemes.join(', ')})`,
+  summary: `refine by Loop, Catmull-Clark, Butterfly, √3 or linear subdivision (SCHEME: ${subdivisionSchemes.join(', ')})`,
   async run(args, reading) {
     const { scheme, input, output, levels } = parseSubdivideArguments(args);
     const { mesh } = await loadMesh(input, reading);

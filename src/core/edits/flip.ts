@@ -54,6 +54,16 @@ export function flipEdge(mesh: HalfedgeMesh, e: number, options: EditOptions = {
   const why = canFlipEdge(mesh, e);
   if (why) throw new TopologyError(`flipEdge: ${why}`);
   const w = new PointerWriter(mesh, options);
+  flipEdgeAt(w, e);
+  return w.result();
+}
+
+/**
+ * The flip itself, through a caller's writer, for a caller that has just asked `canFlipEdge`
+ * (remeshing flips many edges with one writer per phase).
+ */
+export function flipEdgeAt(w: PointerWriter, e: number): void {
+  const mesh = w.mesh;
   const { heNext, heVertex, heFace, vHalfedge } = mesh;
   const h = 2 * e;
   const t = h + 1;
@@ -89,5 +99,4 @@ export function flipEdge(mesh: HalfedgeMesh, e: number, options: EditOptions = {
   w.link(t, t2);
   w.setFace(h1, f1);
   w.setFaceHalfedge(f1, t);
-  return w.result();
 }

@@ -38,7 +38,7 @@ export { canCollapseFace, collapseFace } from './collapse-face.js';
 export { canDissolveEdge, canDissolveVertex, dissolveEdge, dissolveVertex } from './dissolve.js';
 export { canExtrudeFace, extrudeFace, type ExtrudeOptions, type ExtrudePlacement } from './extrude.js';
 export { halfedgeFromTo } from './find.js';
-export { canFlipEdge, flipEdge } from './flip.js';
+export { canFlipEdge, flipEdge, flipEdgeAt } from './flip.js';
 export { canMakeBoundary, makeBoundary } from './make-boundary.js';
 export { canMergeFaces, mergeFaces, type MergeResult } from './merge.js';
 export { canPokeFace, pokeFace } from './poke.js';

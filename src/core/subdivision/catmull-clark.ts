@@ -21,6 +21,9 @@
  * Phases: add face points · split every edge at its edge point · connect the face points ·
  * move the old vertices. Counts after one level: V' = V + E + F, E' = 2E + C, F' = C, where
  * C = Σ face degrees (the halfedges that have a face; 2E on a closed mesh).
+ *
+ * Linear subdivision (`linear.ts`) is this topology with plain averages for the points: the level
+ * below takes the rule that places them (`QuadRule`).
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
@@ -40,7 +43,44 @@ export function catmullClark(mesh: HalfedgeMesh): Operation {
 }
 
 /** The phases of one level; `listIds` false leaves the phases' id lists out (a run straight through). */
-export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
+export function catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
+  return quadLevel(mesh, listIds, catmullClarkRule);
+}
+
+/**
+ * Where a level of Catmull-Clark's topology puts its points: Catmull-Clark's stencils, or plain
+ * averages (linear subdivision, `linear.ts`). The face points are the mean of their face's corners
+ * in both; the topology and its phases are the same.
+ */
+export interface QuadRule {
+  /** Puts the point of each edge e at vertex `firstEdgePoint + e`, the face points being at `firstFacePoint + f`. */
+  placeEdgePoints(mesh: HalfedgeMesh, x: Float64Array | Float32Array, E: number, firstFacePoint: number, firstEdgePoint: number): void;
+  /** What the phase that splits the edges tells a student about where the edge points go. */
+  splitExplanation: string;
+  /** The new places of the old vertices (three numbers each), or null when they stay where they are. */
+  vertexPoints: ((mesh: HalfedgeMesh, x: ArrayLike<number>, firstFacePoint: number) => Float64Array) | null;
+  /** What the phase that moves the old vertices tells a student (with `vertexPoints`). */
+  moveExplanation: string;
+}
+
+const catmullClarkRule: QuadRule = {
+  placeEdgePoints,
+  splitExplanation:
+    'Each edge gets a new vertex at the mean of its two ends and the two face points beside it (the midpoint, on the boundary). ' +
+    'Every face now has twice as many sides, its corners alternating between old vertices and edge points.',
+  vertexPoints: catmullClarkVertexPoints,
+  moveExplanation:
+    'Each old vertex P with n edges moves to (F + 2R + (n − 3)P) / n, ' +
+    'where F averages the face points around it and R the midpoints of its old edges. ' +
+    'Boundary vertices follow the boundary curve instead (3/4 of themselves, 1/8 of each boundary neighbour), and corners stay put.',
+};
+
+/**
+ * One level of Catmull-Clark's topology with the points placed by `rule`: add face points, split
+ * every edge at its edge point, connect the face points, and (when the rule moves them) move the
+ * old vertices.
+ */
+export function* quadLevel(mesh: HalfedgeMesh, listIds: boolean, rule: QuadRule): Operation {
   startLevel(mesh);
   const V = mesh.vertexSlots;
   const E = mesh.edgeSlots;
@@ -68,19 +108,13 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   };
 
   // the old vertices move last, by a rule that reads their old edges and faces: compute it now
-  const vertexPoints = attributes.map((a) => catmullClarkVertexPoints(old, a.data, V));
+  const vertexPoints = rule.vertexPoints === null ? null : attributes.map((a) => rule.vertexPoints!(old, a.data, V));
 
   // split edges at their edge points (vertex V + F + e for edge e), placed first while each edge
   // still joins its two ends
-  for (const a of attributes) placeEdgePoints(old, a.data, E, V, V + F);
+  for (const a of attributes) rule.placeEdgePoints(old, a.data, E, V, V + F);
   const step = handed.take(catmullClarkSteps, listIds);
-  yield {
-    name: 'split every edge at its edge point',
-    explanation:
-      'Each edge gets a new vertex at the mean of its two ends and the two face points beside it (the midpoint, on the boundary). ' +
-      'Every face now has twice as many sides, its corners alternating between old vertices and edge points.',
-    ...step(0),
-  };
+  yield { name: 'split every edge at its edge point', explanation: rule.splitExplanation, ...step(0) };
 
   // split faces
   yield {
@@ -92,15 +126,9 @@ export function* catmullClarkLevel(mesh: HalfedgeMesh, listIds: boolean): Operat
   };
 
   // move the old vertices
+  if (vertexPoints === null) return;
   storeValues(attributes, vertexPoints, 0);
-  yield {
-    name: 'move the old vertices',
-    explanation:
-      'Each old vertex P with n edges moves to (F + 2R + (n − 3)P) / n, ' +
-      'where F averages the face points around it and R the midpoints of its old edges. ' +
-      'Boundary vertices follow the boundary curve instead (3/4 of themselves, 1/8 of each boundary neighbour), and corners stay put.',
-    moved: { vertices: range(listIds, 0, V) },
-  };
+  yield { name: 'move the old vertices', explanation: rule.moveExplanation, moved: { vertices: range(listIds, 0, V) } };
 }
 
 /** The topology of a level after the face points, step by step: split every edge, connect the face points (vertex V + f for face f). */

@@ -1,7 +1,8 @@
 /**
  * Subdivision: refine a mesh again and again, each level splitting every face into smaller ones and
  * moving the vertices by fixed weighted averages of their neighbours (*stencils*), so that the
- * levels converge to a smooth surface. Four classic schemes:
+ * levels converge to a smooth surface. Four classic schemes, and linear subdivision (Catmull-Clark's
+ * topology with plain averages: the faces get smaller, the shape stays):
  *
  * | scheme        | faces        | each level                                      | old vertices          |
  * |---------------|--------------|-------------------------------------------------|-----------------------|
@@ -9,6 +10,7 @@
  * | Catmull-Clark | any polygons | an n-gon becomes n quads                        | move (approximating)  |
  * | Butterfly     | triangles    | a triangle becomes 4, as in Loop                | stay (interpolating)  |
  * | √3            | triangles    | a triangle becomes 3 (face points, edge flips)  | move (approximating)  |
+ * | linear        | any polygons | an n-gon becomes n quads, as in Catmull-Clark   | stay (plain averages) |
  *
  * Each scheme is a steppable operation (see `operation.ts`): one run is one level, done in
  * phases that each leave a valid mesh, named and explained for a student, with the ids of what
@@ -33,6 +35,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { butterflyLevel, butterflySubdivision } from './butterfly.js';
 import { catmullClark, catmullClarkLevel } from './catmull-clark.js';
+import { linearLevel, linearSubdivision } from './linear.js';
 import { loopLevel, loopSubdivision } from './loop.js';
 import { requireApplicable, type SubdivisionScheme, unknownScheme } from './preconditions.js';
 import { type SubdivisionOptions, sqrt3Level, sqrt3Subdivision } from './sqrt3.js';
@@ -40,6 +43,7 @@ import { type SubdivisionOptions, sqrt3Level, sqrt3Subdivision } from './sqrt3.j
 export { butterflySubdivision } from './butterfly.js';
 export { catmullClark } from './catmull-clark.js';
 export { type HelperThread, useHelperThread } from './helper-thread.js';
+export { linearSubdivision } from './linear.js';
 export { loopSubdivision } from './loop.js';
 export { cannotSubdivide, type SubdivisionScheme, subdivisionSchemes } from './preconditions.js';
 export { type SubdivisionOptions, sqrt3Subdivision } from './sqrt3.js';
@@ -60,6 +64,8 @@ export function subdivisionOperation(mesh: HalfedgeMesh, scheme: SubdivisionSche
       return butterflySubdivision(mesh);
     case 'sqrt3':
       return sqrt3Subdivision(mesh, options);
+    case 'linear':
+      return linearSubdivision(mesh);
     default:
       return unknownScheme(scheme);
   }
@@ -71,6 +77,7 @@ const levelPhases: Record<SubdivisionScheme, (mesh: HalfedgeMesh, listIds: boole
   'catmull-clark': catmullClarkLevel,
   butterfly: butterflyLevel,
   sqrt3: sqrt3Level,
+  linear: linearLevel,
 };
 
 /**

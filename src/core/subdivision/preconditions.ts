@@ -6,20 +6,21 @@ import { InvalidInputError, TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { needsTriangles } from '../triangles.js';
 
-export type SubdivisionScheme = 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3';
+export type SubdivisionScheme = 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3' | 'linear';
 
-export const subdivisionSchemes: readonly SubdivisionScheme[] = ['loop', 'catmull-clark', 'butterfly', 'sqrt3'];
+export const subdivisionSchemes: readonly SubdivisionScheme[] = ['loop', 'catmull-clark', 'butterfly', 'sqrt3', 'linear'];
 
 const schemeNames: Record<SubdivisionScheme, string> = {
   loop: 'Loop subdivision',
   'catmull-clark': 'Catmull-Clark subdivision',
   butterfly: 'Butterfly subdivision',
   sqrt3: '√3 subdivision',
+  linear: 'linear subdivision',
 };
 
 /**
- * Null when `scheme` applies to `mesh`, else a sentence saying why not. Catmull-Clark takes any
- * polygons; Loop, Butterfly and √3 need triangles, no two of them sharing two edges (see
+ * Null when `scheme` applies to `mesh`, else a sentence saying why not. Catmull-Clark and linear
+ * subdivision take any polygons; Loop, Butterfly and √3 need triangles, no two of them sharing two edges (see
  * `twoTrianglesOnTwoEdges`).
  * @example cannotSubdivide(buildMesh(cube()).mesh, 'loop')
  *   // "Loop subdivision needs triangles; f0 is a quad. Triangulate the mesh first."
@@ -27,7 +28,7 @@ const schemeNames: Record<SubdivisionScheme, string> = {
  */
 export function cannotSubdivide(mesh: HalfedgeMesh, scheme: SubdivisionScheme): string | null {
   if (!Object.hasOwn(schemeNames, scheme)) unknownScheme(scheme);
-  if (scheme === 'catmull-clark') return null;
+  if (scheme === 'catmull-clark' || scheme === 'linear') return null;
   const reason = needsTriangles(mesh, schemeNames[scheme]);
   if (reason) return `${reason} Triangulate the mesh first.`;
   return twoTrianglesOnTwoEdges(mesh, schemeNames[scheme]);

@@ -1,10 +1,10 @@
 /**
- * The operations a student can run: subdivision schemes, the plane cut, and the local edits on
- * the selection. Each button is disabled, with the reason as its tooltip, when it does not apply
- * (Loop on a quad mesh; a flip on a boundary edge). The reasons come from the core's own
+ * The operations a student can run: subdivision schemes, the plane cut, smoothing, decimation,
+ * remeshing, and the local edits on the selection. Each button is disabled, with the reason as
+ * its tooltip, when it does not apply (Loop on a quad mesh; a flip on a boundary edge). The reasons come from the core's own
  * predicates, asked here on the page's copy of the mesh.
  */
-import type { HalfedgeMesh } from '../../core/index.js';
+import type { HalfedgeMesh, SubdivisionScheme } from '../../core/index.js';
 import type { CheckedOperation } from '../../workers/protocol.js';
 import { cannotEdit, cannotStart, type EditKind, type EditRequest, type OperationRequest } from '../../workers/operations.js';
 import { el, replace } from '../dom.js';
@@ -21,11 +21,12 @@ export interface OperationActions {
   setPlaneMode(mode: 'translate' | 'rotate'): void;
 }
 
-const schemes: Array<{ scheme: 'loop' | 'catmull-clark' | 'butterfly' | 'sqrt3'; label: string }> = [
+const schemes: Array<{ scheme: SubdivisionScheme; label: string }> = [
   { scheme: 'loop', label: 'Loop' },
   { scheme: 'catmull-clark', label: 'Catmull-Clark' },
   { scheme: 'butterfly', label: 'Butterfly' },
   { scheme: 'sqrt3', label: '√3' },
+  { scheme: 'linear', label: 'Linear' },
 ];
 
 /** The edits of the selection, by what they act on; a weld takes two edges, chosen one after the other. */
@@ -105,6 +106,9 @@ export class OperationsPanel {
   private readonly smoothButton: HTMLButtonElement;
   private readonly targetFaces = el('input', { type: 'number', min: '0', step: '1', 'aria-label': 'Faces to keep', class: 'small-input' });
   private readonly decimateButton: HTMLButtonElement;
+  private readonly targetLength = el('input', { type: 'number', min: '0', step: 'any', placeholder: 'mean', 'aria-label': 'Target edge length (empty: the mean edge length)', class: 'small-input' });
+  private readonly remeshIterations = el('input', { type: 'number', min: '0', step: '1', value: '3', 'aria-label': 'Remeshing iterations', class: 'small-input' });
+  private readonly remeshButton: HTMLButtonElement;
   private unavailable: Record<CheckedOperation, string | null> | null = null;
   private readonly splitFrom = el('select', { 'aria-label': 'Split face from vertex' });
   private readonly splitTo = el('select', { 'aria-label': 'Split face to vertex' });
@@ -144,8 +148,10 @@ export class OperationsPanel {
     this.splitButton = el('button', { type: 'button', 'data-edit': 'split-face', onclick: whenAvailable(() => this.runSplitFace()) }, 'Split face');
     this.smoothButton = el('button', { type: 'button', 'data-operation': 'smooth', onclick: whenAvailable(() => actions.start(this.smoothRequest())) }, 'Smooth');
     this.decimateButton = el('button', { type: 'button', 'data-operation': 'decimate', onclick: whenAvailable(() => actions.start(this.decimateRequest())) }, 'Decimate');
+    this.remeshButton = el('button', { type: 'button', 'data-operation': 'remesh', onclick: whenAvailable(() => actions.start(this.remeshRequest())) }, 'Remesh');
     this.smoothMethod.addEventListener('change', () => this.updateChecked());
     this.targetFaces.addEventListener('input', () => this.updateChecked());
+    for (const input of [this.targetLength, this.remeshIterations]) input.addEventListener('input', () => this.updateChecked());
     for (const input of this.plane) input.addEventListener('change', () => this.gizmoShown && actions.showPlane(this.planeValues()));
     for (const select of [this.splitFrom, this.splitTo]) select.addEventListener('change', () => this.updateSplitFace());
     replace(
@@ -160,6 +166,8 @@ export class OperationsPanel {
       el('div', { class: 'button-row' }, el('label', {}, 'iterations ', this.iterations), el('label', {}, 'λ ', this.lambda), el('label', {}, 'μ ', this.mu), this.smoothButton),
       el('h3', {}, 'Decimate (quadric error)'),
       el('div', { class: 'button-row' }, el('label', {}, 'keep ', this.targetFaces, ' faces'), this.decimateButton),
+      el('h3', {}, 'Remesh (isotropic)'),
+      el('div', { class: 'button-row' }, el('label', {}, 'edge length ', this.targetLength), el('label', {}, 'iterations ', this.remeshIterations), this.remeshButton),
       el('h3', {}, 'Edit the selection'),
       el('div', { class: 'button-row' }, ...this.editButtons),
       el('div', { class: 'button-row' }, 'from ', this.splitFrom, ' to ', this.splitTo, this.splitButton),
@@ -211,7 +219,13 @@ export class OperationsPanel {
     return { kind: 'decimate', options: { targetFaces: Number(this.targetFaces.value) } };
   }
 
-  /** The smoothing and decimation buttons: the worker's face checks, then the form's numbers. */
+  /** Remeshing to the length typed (none: the mean edge length), in the iterations typed. */
+  private remeshRequest(): OperationRequest {
+    const length = this.targetLength.value.trim();
+    return { kind: 'remesh', options: { ...(length === '' ? {} : { targetEdgeLength: Number(length) }), iterations: Number(this.remeshIterations.value) } };
+  }
+
+  /** The smoothing, decimation and remeshing buttons: the worker's face checks, then the form's numbers. */
   private updateChecked(): void {
     const mesh = this.mesh;
     const unavailable = this.unavailable;
@@ -222,6 +236,15 @@ export class OperationsPanel {
     const target = Number(this.targetFaces.value);
     const badTarget = !Number.isInteger(target) || target < 0 ? 'the number of faces to keep must be a whole number ≥ 0' : target >= mesh.nFaces ? `the mesh has only ${mesh.nFaces} faces` : null;
     setAvailability(this.decimateButton, 'Start decimation', noFaces ?? unavailable.decimate ?? badTarget);
+    const length = this.targetLength.value.trim();
+    const iterations = Number(this.remeshIterations.value);
+    const badRemesh =
+      length !== '' && !(Number(length) > 0 && Number(length) < Infinity)
+        ? 'the edge length must be a number > 0 (or empty, for the mean edge length)'
+        : !Number.isInteger(iterations) || iterations < 1
+          ? 'the number of iterations must be a whole number ≥ 1'
+          : null;
+    setAvailability(this.remeshButton, 'Start remeshing', noFaces ?? unavailable.remesh ?? badRemesh);
   }
 
   private cutRequest(): OperationRequest {
