@@ -37,7 +37,7 @@ describe('every exercise', () => {
   it('has fixtures for the hard cases they are named after', () => {
     const mesh = (id: string, name: RegExp) => {
       const fixture = findExercise(id)!.fixtures.find((f) => name.test(f.name))!;
-      return { mesh: fixtureMesh(fixture), input: fixture.input! };
+      return { mesh: fixtureMesh(fixture), input: fixture.input as number };
     };
     const link = mesh('collapse-edge', /link condition/);
     expect(canCollapseEdge(link.mesh, link.input)).toMatch(/link condition/);

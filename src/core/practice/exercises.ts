@@ -10,7 +10,10 @@ import { canFlipEdge, flipEdge } from '../edits/flip.js';
 import { pokeFace } from '../edits/poke.js';
 import { splitEdgeTriangulated } from '../edits/split-edge.js';
 import { subdivide } from '../subdivision/index.js';
-import type { Exercise } from './exercise.js';
+import type { Exercise, ExerciseInput } from './exercise.js';
+
+/** The input of a fixture that gives one id. */
+const id = (input: ExerciseInput | undefined) => input as number;
 
 const starter = (comment: string, body: string) => `// ${comment}\nexport default function (mesh, input) {\n${body}\n}\n`;
 
@@ -36,7 +39,7 @@ export const exercises: Exercise[] = [
       { name: 'a vertex on the boundary of a disk', shapes: [['disk', 2]], input: 8 },
       { name: 'a corner of a grid (on the boundary)', shapes: [['grid', 2, 2]], input: 0 },
     ],
-    reference: (mesh, v) => mesh.vertexDegree(v!),
+    reference: (mesh, v) => mesh.vertexDegree(id(v)),
   },
   {
     id: 'face-degree',
@@ -51,7 +54,7 @@ export const exercises: Exercise[] = [
       { name: 'a quad of a cube', shapes: [['cube']], input: 0 },
       { name: 'a quad of a ring with two holes', shapes: [['annulus', 5]], input: 3 },
     ],
-    reference: (mesh, f) => mesh.faceDegree(f!),
+    reference: (mesh, f) => mesh.faceDegree(id(f)),
   },
   {
     id: 'one-ring',
@@ -69,7 +72,7 @@ export const exercises: Exercise[] = [
       { name: 'the centre of a disk', shapes: [['disk', 1]], input: 0 },
       { name: 'a vertex on the boundary', shapes: [['grid', 2, 2]], input: 1 },
     ],
-    reference: (mesh, v) => [...vertexAdjacentVertices(mesh, v!)],
+    reference: (mesh, v) => [...vertexAdjacentVertices(mesh, id(v))],
   },
   {
     id: 'is-boundary-vertex',
@@ -85,7 +88,7 @@ export const exercises: Exercise[] = [
       { name: 'a vertex on the rim of a disk', shapes: [['disk', 2]], input: 12 },
       { name: 'a corner of a grid', shapes: [['grid', 2, 2]], input: 8 },
     ],
-    reference: (mesh, v) => mesh.isBoundaryVertex(v!),
+    reference: (mesh, v) => mesh.isBoundaryVertex(id(v)),
   },
   {
     id: 'boundary-loops',
@@ -143,7 +146,7 @@ export const exercises: Exercise[] = [
       { name: 'an edge of a tetrahedron (the other corners are joined: refused)', shapes: [['tetrahedron']], input: 0 },
       { name: 'an edge between quads (refused)', shapes: [['cube']], input: 0 },
     ],
-    reference: (mesh, e) => !canFlipEdge(mesh, e!) && (flipEdge(mesh, e!), true),
+    reference: (mesh, e) => !canFlipEdge(mesh, id(e)) && (flipEdge(mesh, id(e)), true),
   },
   {
     id: 'split-edge',
@@ -165,7 +168,7 @@ export const exercises: Exercise[] = [
       { name: 'an edge on the boundary', shapes: [['disk', 1]], input: 1 },
       { name: 'an edge of a tetrahedron (valence 3 corners)', shapes: [['tetrahedron']], input: 2 },
     ],
-    reference: (mesh, e) => splitEdgeTriangulated(mesh, e!).vertex,
+    reference: (mesh, e) => splitEdgeTriangulated(mesh, id(e)).vertex,
   },
   {
     id: 'collapse-edge',
@@ -190,7 +193,7 @@ export const exercises: Exercise[] = [
       { name: 'an edge of a bipyramid whose ends share a third neighbour (link condition: refused)', shapes: [['uvSphere', 2, 3]], input: 1 },
       { name: 'an edge of a tetrahedron (refused)', shapes: [['tetrahedron']], input: 0 },
     ],
-    reference: (mesh, e) => (canCollapseEdge(mesh, e!) ? -1 : collapseEdge(mesh, e!).vertex),
+    reference: (mesh, e) => (canCollapseEdge(mesh, id(e)) ? -1 : collapseEdge(mesh, id(e)).vertex),
   },
   {
     id: 'poke-face',
@@ -208,7 +211,7 @@ export const exercises: Exercise[] = [
       { name: 'a quad of a cube', shapes: [['cube']], input: 2 },
       { name: 'a triangle on the boundary of a disk', shapes: [['disk', 1]], input: 3 },
     ],
-    reference: (mesh, f) => pokeFace(mesh, f!).vertex,
+    reference: (mesh, f) => pokeFace(mesh, id(f)).vertex,
   },
   {
     id: 'loop-subdivision',
@@ -234,6 +237,7 @@ export const exercises: Exercise[] = [
   },
 ];
 
+/** The built-in exercise with this id, or with this as one of its older ids (`poke-face`). */
 export function findExercise(id: string): Exercise | undefined {
-  return exercises.find((exercise) => exercise.id === id);
+  return exercises.find((exercise) => exercise.id === id) ?? exercises.find((exercise) => exercise.aliases?.includes(id));
 }
