@@ -8,12 +8,35 @@ import { boundaryLoops, vertexAdjacentVertices } from '../circulators.js';
 import { canCollapseEdge, collapseEdge } from '../edits/collapse.js';
 import { canFlipEdge, flipEdge } from '../edits/flip.js';
 import { pokeFace } from '../edits/poke.js';
+import { bevelEdge, bevelVertex, canBevelEdge, canBevelVertex } from '../edits/bevel.js';
+import { canExtrudeFace, extrudeFace } from '../edits/extrude.js';
 import { splitEdgeTriangulated } from '../edits/split-edge.js';
 import { subdivide } from '../subdivision/index.js';
-import type { Exercise, ExerciseInput } from './exercise.js';
+import type { Exercise, ExerciseInput, Fixture } from './exercise.js';
 
 /** The input of a fixture that gives one id. */
 const id = (input: ExerciseInput | undefined) => input as number;
+/** The input of a fixture that gives named numbers. */
+const named = (input: ExerciseInput | undefined) => input as { readonly [name: string]: number };
+
+/** A hidden fixture: a hard case, shown to the student by its name and rule only. */
+const hidden = (name: string, rule: string, fixture: Omit<Fixture, 'name' | 'hidden' | 'rule'>): Fixture => ({ name: `hidden: ${name}`, ...fixture, hidden: true, rule });
+
+/**
+ * A pentagon (f0) with its fifth corner v4 in the middle of its bottom side, and under that side a
+ * triangle with no area (f1: v0, v1, v4 on one line), whose long side is on the boundary.
+ * ```
+ *    v3 ─────────────── v2
+ *    │                   │
+ *    │        f0         │
+ *    │                   │
+ *    v0 ────── v4 ────── v1     f1 = v0 → v1 → v4: flat, along the bottom
+ * ```
+ */
+/** Two triangles on the same three corners, back to back: closed, every vertex with 2 edges. */
+const PILLOW = 'OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n';
+
+const SLIVER_UNDER_PENTAGON = 'OFF\n5 2 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n1 0 0\n5 0 4 1 2 3\n3 0 1 4\n';
 
 const starter = (comment: string, body: string) => `// ${comment}\nexport default function (mesh, input) {\n${body}\n}\n`;
 
@@ -196,10 +219,12 @@ export const exercises: Exercise[] = [
     reference: (mesh, e) => (canCollapseEdge(mesh, id(e)) ? -1 : collapseEdge(mesh, id(e)).vertex),
   },
   {
-    id: 'poke-face',
-    title: 'Poke a face',
+    id: 'inset-vertex',
+    aliases: ['poke-face'],
+    title: 'Inset a vertex (poke a face)',
     kind: 'edit',
     answer: 'vertex',
+    refusal: -1,
     task: ['Put a new vertex at the centroid of face `input` (the average of its corners) and join it to every corner, so a face of k sides becomes k triangles. Return the new vertex.'],
     hints: [
       'A face of k sides gains one vertex, k edges and k − 1 faces (it keeps its own id as one of the triangles).',
@@ -210,8 +235,112 @@ export const exercises: Exercise[] = [
       { name: 'a triangle of a tetrahedron', shapes: [['tetrahedron']], input: 0 },
       { name: 'a quad of a cube', shapes: [['cube']], input: 2 },
       { name: 'a triangle on the boundary of a disk', shapes: [['disk', 1]], input: 3 },
+      hidden('a lone triangle', 'A face with the hole all around is poked like any other: every side keeps its boundary twin.', { shapes: [['singleTriangle']], input: 0 }),
+      hidden('a pentagon with a corner on a straight side', 'A face of any number of sides becomes that many triangles, whatever its shape.', { off: SLIVER_UNDER_PENTAGON, input: 0 }),
+      hidden('a quad at the corner of a grid', 'A face along the boundary is poked too: its boundary sides stay on the hole.', { shapes: [['grid', 2, 2, 1]], input: 0 }),
     ],
     reference: (mesh, f) => pokeFace(mesh, id(f)).vertex,
+  },
+  {
+    id: 'extrude-face',
+    title: 'Extrude a face',
+    kind: 'edit',
+    answer: 'face',
+    refusal: -1,
+    task: [
+      'The input is `{ face, offset, inset }`. Surround face `face` with a ring of quads, one on each of its sides, and move the face: each corner v gets a new copy u, and face `face` now runs round the copies. Return `face`.',
+      'Where the copies go: u = (1 − inset)·v + inset·c + offset·n, where c is the centroid of the face (the average of its corners) and n its unit normal (see the hints). So inset 0.5 moves each corner half way to the centre, and offset 0.5 pulls the face out by 0.5.',
+      'Each quad runs v_i → v_i+1 → u_i+1 → u_i, on the old side i, which stays where it is with its twin (so the face across it, or the hole, is not touched). A face of k sides gains k vertices, 2k edges and k faces.',
+      'Return -1 and change nothing when the extrusion does not apply: an inset outside 0 … 1, or an offset other than 0 on a face with no area (it has no normal to move along).',
+    ],
+    hints: [
+      "The unit normal: add up the cross products p_i × p_i+1 of each side's two corners (Newell's formula; half the sum is the vector area), then divide by its length. Compute every position before you write anything.",
+      'Make k new vertices, k rim edges (u_i → u_i+1, in the face), k rung edges (v_i → u_i) and k quads first, then set every origin, next and face.',
+      'Quad i uses four halfedges: the old side i, the rung at v_i+1 going up, the twin of rim i (u_i+1 → u_i) and the rung at v_i coming down.',
+      'The old corners keep their vertexHalfedge (their old halfedges still leave them); each new corner needs one, and the face needs one of its rims.',
+    ],
+    starter: starter('input: { face, offset, inset }. Extrude the face; return it, or -1.', '  const { face, offset, inset } = input;\n  return -1;'),
+    fixtures: [
+      { name: 'a quad of a cube, pulled out by 0.5', shapes: [['cube']], input: { face: 1, offset: 0.5, inset: 0 } },
+      { name: 'a triangle of a tetrahedron, inset 0.25 and pushed in by 0.2', shapes: [['tetrahedron']], input: { face: 0, offset: -0.2, inset: 0.25 } },
+      { name: 'a triangle inside a disk, inset 0.5 (offset 0)', shapes: [['disk', 2]], input: { face: 0, offset: 0, inset: 0.5 } },
+      hidden('a triangle at the corner of a grid', 'A face along the boundary is extruded too: the quads on its boundary sides border the hole.', { shapes: [['grid', 2, 2]], input: { face: 0, offset: 0.3, inset: 0.2 } }),
+      hidden('a lone triangle', 'A face with the hole all around is extruded like any other.', { shapes: [['singleTriangle']], input: { face: 0, offset: 0.5, inset: 0.1 } }),
+      hidden('a pentagon with a corner on a straight side', 'A face of any number of sides gets one quad per side.', { off: SLIVER_UNDER_PENTAGON, input: { face: 0, offset: 0.4, inset: 0.3 } }),
+      hidden('an inset of 1.5 (refused)', 'An inset outside 0 … 1 is refused: return -1 and change nothing.', { shapes: [['cube']], input: { face: 2, offset: 0.1, inset: 1.5 } }),
+      hidden('a face with no area, pulled out by 0.3 (refused)', 'A face with no area has no normal: with an offset other than 0 it is refused (return -1 and change nothing).', { off: SLIVER_UNDER_PENTAGON, input: { face: 1, offset: 0.3, inset: 0 } }),
+    ],
+    reference: (mesh, input) => {
+      const { face, offset, inset } = named(input);
+      return canExtrudeFace(mesh, face, { offset, inset }) ? -1 : extrudeFace(mesh, face, { offset, inset }).face;
+    },
+  },
+  {
+    id: 'bevel-vertex',
+    title: 'Bevel a vertex',
+    kind: 'edit',
+    answer: 'face',
+    refusal: -1,
+    task: [
+      'The input is `{ vertex, amount }`. Replace vertex `vertex` by a new face with one corner on each of its edges: a vertex with d edges becomes a face of d sides. Return the new face.',
+      'Each corner goes `amount` of the way from the vertex along its edge: the corner on the edge to neighbour x is at (1 − amount)·v + amount·x. The vertex itself becomes one of the corners (moved there), the others are new: d − 1 vertices, d edges and one face more.',
+      'Each face around the vertex gains one side (between its two new corners), and the new face gets the other halfedge of each of those sides. On the boundary, the gap of the hole gains the side instead of a face, so the new face borders the hole.',
+      'Return -1 and change nothing when the bevel does not apply: a vertex with fewer than 3 edges, or an amount outside 0 … 1.',
+    ],
+    hints: [
+      'List the outgoing halfedges (spokes) counter-clockwise first: h, then twin(prev(h)), … Spoke j keeps its edge; it now leaves corner j.',
+      'Between spoke j and spoke j + 1 lies one face (or the hole). Its loop went … → prev(spoke j) → spoke j → …, through v; now it goes prev(spoke j) → new side → spoke j, where the new side runs from corner j + 1 to corner j.',
+      'Read every prev and face you need before the first write: the loops change under you.',
+      "Every corner needs a vertexHalfedge: its spoke. On the boundary, the corner just after the hole's gap must leave along the new side on the hole instead.",
+    ],
+    starter: starter('input: { vertex, amount }. Bevel the vertex; return the new face, or -1.', '  const { vertex, amount } = input;\n  return -1;'),
+    fixtures: [
+      { name: 'a corner of a cube, amount 0.25', shapes: [['cube']], input: { vertex: 0, amount: 0.25 } },
+      { name: 'the centre of a disk (6 edges), amount 0.5', shapes: [['disk', 1]], input: { vertex: 0, amount: 0.5 } },
+      { name: 'a corner of a tetrahedron, amount 0.3', shapes: [['tetrahedron']], input: { vertex: 1, amount: 0.3 } },
+      hidden('a vertex on the boundary (4 edges)', 'A vertex on the boundary is bevelled too: the new face borders the hole along one side.', { shapes: [['disk', 2]], input: { vertex: 7, amount: 0.3 } }),
+      hidden('a vertex on the boundary with two faces', 'A boundary vertex with 3 edges becomes a triangle on the hole.', { shapes: [['disk', 1]], input: { vertex: 2, amount: 0.4 } }),
+      hidden('a corner of a grid of quads (2 edges: refused)', 'A vertex with fewer than 3 edges is refused: the face would have fewer than 3 sides. Return -1 and change nothing.', { shapes: [['grid', 2, 2, 1]], input: { vertex: 0, amount: 0.3 } }),
+      hidden('an amount of 1.5 (refused)', 'An amount outside 0 … 1 is refused: return -1 and change nothing.', { shapes: [['cube']], input: { vertex: 3, amount: 1.5 } }),
+    ],
+    reference: (mesh, input) => {
+      const { vertex, amount } = named(input);
+      return canBevelVertex(mesh, vertex, amount) ? -1 : bevelVertex(mesh, vertex, { amount }).face;
+    },
+  },
+  {
+    id: 'bevel-edge',
+    title: 'Bevel an edge',
+    kind: 'edit',
+    answer: 'face',
+    refusal: -1,
+    task: [
+      'The input is `{ edge, amount }`. Replace edge `edge`, between two faces, by a new face with one corner on every other edge leaving either of its ends. If its ends have m and n edges, the new face has m + n − 2 sides. Return the new face.',
+      'Each corner goes `amount` of the way from its end along its edge: (1 − amount)·a + amount·x for the edge from end a to neighbour x. The two ends become two of the corners (moved there); the rest are new.',
+      'Every face around either end, other than the two beside the edge, gains one side between its two new corners (on the boundary, the hole gains it). The two faces beside the edge keep a side each toward the new face: the edge itself on one side, a new edge on the other.',
+      'Return -1 and change nothing when the bevel does not apply: an edge on the boundary, an edge whose ends have fewer than 5 edges between them (the face would have fewer than 3 sides), or an amount outside 0 … 1.',
+    ],
+    hints: [
+      'Work out both ends like a vertex bevel, one fan each: the spokes of end a are its outgoing halfedges counter-clockwise after h = edgeHalfedge(e), and those of end b after twin(h). There are no new sides across the two faces of the edge.',
+      'Read every prev, next, face and position you need before the first write.',
+      'Where twin(h) was, in its face, a new edge now runs from b to the last corner of a; twin(h) itself moves into the new face and leaves the last corner of b. h stays in its face.',
+      'The new face goes: twin(h), the sides of a, the twin of the new edge, the sides of b.',
+    ],
+    starter: starter('input: { edge, amount }. Bevel the edge; return the new face, or -1.', '  const { edge, amount } = input;\n  return -1;'),
+    fixtures: [
+      { name: 'an edge inside a disk, amount 0.25', shapes: [['disk', 2]], input: { edge: 0, amount: 0.25 } },
+      { name: 'an edge of a cube, amount 0.3', shapes: [['cube']], input: { edge: 0, amount: 0.3 } },
+      { name: 'an edge of a tetrahedron, amount 0.2', shapes: [['tetrahedron']], input: { edge: 3, amount: 0.2 } },
+      hidden('an edge from the centre of a disk to its rim', 'An edge between two faces with an end on the boundary is bevelled too: the new face borders the hole at that end.', { shapes: [['disk', 1]], input: { edge: 0, amount: 0.3 } }),
+      hidden('an edge across a strip (both ends on the boundary)', 'An edge between two faces with both ends on the boundary is bevelled too: the new face borders the hole at each end.', { shapes: [['strip', 3]], input: { edge: 1, amount: 0.25 } }),
+      hidden('an edge on the boundary (refused)', 'An edge on the boundary is refused: a bevel puts a face between two faces. Return -1 and change nothing.', { shapes: [['disk', 1]], input: { edge: 1, amount: 0.3 } }),
+      hidden('an edge of a pillow of two triangles (refused)', 'An edge whose ends have fewer than 5 edges between them is refused: the new face would have fewer than 3 sides. Return -1 and change nothing.', { off: PILLOW, input: { edge: 0, amount: 0.3 } }),
+      hidden('an amount of -0.5 (refused)', 'An amount outside 0 … 1 is refused: return -1 and change nothing.', { shapes: [['cube']], input: { edge: 4, amount: -0.5 } }),
+    ],
+    reference: (mesh, input) => {
+      const { edge, amount } = named(input);
+      return canBevelEdge(mesh, edge, amount) ? -1 : bevelEdge(mesh, edge, { amount }).face;
+    },
   },
   {
     id: 'loop-subdivision',

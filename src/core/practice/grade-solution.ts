@@ -39,11 +39,15 @@ export async function gradeSolution(exercise: Exercise, source: string, run: Sol
   const runsOf = () => meshes.map((mesh, i) => ({ mesh, input: frozenInput(exercise.fixtures[i].input) }));
   const outputs = await run(source, runsOf());
   const references = await referenceResults(exercise, runsOf(), run);
-  const fixtures = exercise.fixtures.map((fixture, i) => ({
-    ...gradeFixture(exercise, fixture, meshes[i], outputs[i], references[i]),
+  // the fixtures shown first: a hard case refused cleanly earns part of its point only beside them all passing
+  const graded = (i: number, partialCredit = true) => ({
+    ...gradeFixture(exercise, exercise.fixtures[i], meshes[i], outputs[i], references[i], partialCredit),
     before: meshes[i],
-    input: fixture.hidden ? undefined : fixture.input,
-  }));
+    input: exercise.fixtures[i].hidden ? undefined : exercise.fixtures[i].input,
+  });
+  const shown = new Map(exercise.fixtures.flatMap((fixture, i) => (fixture.hidden ? [] : [[i, graded(i)] as const])));
+  const shownPass = [...shown.values()].every((result) => result.checks.every((c) => c.passed));
+  const fixtures = exercise.fixtures.map((_, i) => shown.get(i) ?? graded(i, shownPass));
   const checks = fixtures.flatMap((result) => result.checks);
   // summed in hundredths, so that five checks of 0.8 make 4, not 4.000000000000001
   const score = Math.round(checks.reduce((sum, c) => sum + c.score, 0) * 100) / 100;

@@ -82,7 +82,9 @@ const MAX_TRACE_WORK = 20_000_000;
 
 /**
  * The checks of one fixture. `before` is the fixture's mesh (not changed); `reference` is what the
- * reference answered and left.
+ * reference answered and left. `partialCredit`: whether a hidden fixture the library handles and
+ * the solution refused cleanly earns `PARTIAL_CREDIT` (it does once the solution passes every
+ * fixture that is not hidden: refusing is worth something beside a working edit, not instead of one).
  */
 export function gradeFixture(
   exercise: Exercise,
@@ -90,6 +92,7 @@ export function gradeFixture(
   before: HalfedgeMesh,
   output: RunOutput,
   reference: { value: unknown; mesh: HalfedgeMesh },
+  partialCredit = true,
 ): FixtureResult {
   const after = replayWrites(before.clone(), output.writes);
   const checks: Check[] = [];
@@ -112,8 +115,12 @@ export function gradeFixture(
     );
   } else if (fixture.hidden && refusedCleanly && !libraryRefuses) {
     // a hard case refused cleanly that the library handles: part of the point, on both checks
-    const message = `your code refused this case cleanly (it returned ${String(refusal)} and left the mesh as it was), but the library does the edit: ${PARTIAL_CREDIT} of the point`;
-    for (const what of FIXTURE_CHECKS.edit) checks.push({ name: `${fixture.name}: ${what}`, passed: false, status: 'partial', score: PARTIAL_CREDIT, message });
+    const refused = `your code refused this case cleanly (it returned ${String(refusal)} and left the mesh as it was), but the library does the edit`;
+    for (const what of FIXTURE_CHECKS.edit) {
+      const name = `${fixture.name}: ${what}`;
+      if (partialCredit) checks.push({ name, passed: false, status: 'partial', score: PARTIAL_CREDIT, message: `${refused}: ${PARTIAL_CREDIT} of the point` });
+      else checks.push({ name, passed: false, status: 'failed', score: 0, message: `${refused} (a clean refusal earns ${PARTIAL_CREDIT} of the point once every fixture that is not hidden passes)` });
+    }
   } else {
     const problems = validate(after, { limit: 50 });
     if (problems.length > 0) firstBroken = findFirstBroken(before, output.writes, problems);
@@ -130,7 +137,8 @@ export function gradeFixture(
   if (fixture.hidden) {
     for (const c of checks) {
       c.hidden = true;
-      if (c.status !== 'passed') c.message = `${c.status === 'partial' ? c.message : hiddenFailure(c, output, refusal, libraryRefuses, refusedCleanly)}. A hidden case: ${fixture.rule ?? 'its mesh is not shown'}`;
+      const why = c.status === 'partial' || (refusedCleanly && !libraryRefuses) ? c.message : hiddenFailure(c, output, refusal, libraryRefuses);
+      if (c.status !== 'passed') c.message = `${why}. A hidden case: ${fixture.rule ?? 'its mesh is not shown'}`;
     }
     return { fixture: fixture.name, hidden: true, checks, writes: [], visits: [], reads: 0, firstBroken: null, after };
   }
@@ -138,7 +146,7 @@ export function gradeFixture(
 }
 
 /** What went wrong on a hidden fixture, without an id of its mesh (nor a value that would give one away). */
-function hiddenFailure(check: Check, output: RunOutput, refusal: -1 | false | undefined, libraryRefuses: boolean, refusedCleanly: boolean): string {
+function hiddenFailure(check: Check, output: RunOutput, refusal: -1 | false | undefined, libraryRefuses: boolean): string {
   const error = output.error;
   if (error) {
     const where = error.line === null ? '' : ` at line ${error.line}`;
@@ -147,7 +155,6 @@ function hiddenFailure(check: Check, output: RunOutput, refusal: -1 | false | un
   if (check.name.endsWith(': valid mesh')) return 'the mesh your code left breaks an invariant';
   if (check.name.endsWith(': answer')) return output.writes.length > 0 ? 'a query must leave the mesh as it is, but your code wrote to it' : "your answer is not the library's";
   if (libraryRefuses) return `the library refuses this case, but your code did not return ${String(refusal)} and leave the mesh as it was`;
-  if (refusedCleanly) return `your code refused this case (it returned ${String(refusal)}), but the library does the edit`;
   return "your result is not the library's";
 }
 
