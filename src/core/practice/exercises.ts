@@ -9,7 +9,10 @@ import { canCollapseEdge, collapseEdge } from '../edits/collapse.js';
 import { canFlipEdge, flipEdge } from '../edits/flip.js';
 import { pokeFace } from '../edits/poke.js';
 import { bevelEdge, bevelVertex, canBevelEdge, canBevelVertex } from '../edits/bevel.js';
+import { canDissolveEdge, canDissolveVertex, dissolveEdge, dissolveVertex } from '../edits/dissolve.js';
+import { canCollapseFace, collapseFace } from '../edits/collapse-face.js';
 import { canExtrudeFace, extrudeFace } from '../edits/extrude.js';
+import { canMakeBoundary, makeBoundary } from '../edits/make-boundary.js';
 import { splitEdgeTriangulated } from '../edits/split-edge.js';
 import { subdivide } from '../subdivision/index.js';
 import type { Exercise, ExerciseInput, Fixture } from './exercise.js';
@@ -341,6 +344,130 @@ export const exercises: Exercise[] = [
       const { edge, amount } = named(input);
       return canBevelEdge(mesh, edge, amount) ? -1 : bevelEdge(mesh, edge, { amount }).face;
     },
+  },
+  {
+    id: 'dissolve-edge',
+    title: 'Dissolve an edge',
+    kind: 'edit',
+    answer: 'exact',
+    refusal: false,
+    task: [
+      'Erase edge `input`: the two faces beside it become one face. Return true.',
+      'On the boundary, an edge has one face: that face becomes part of the hole instead (its halfedges lose their face). Any other edge of that face that also lay along the hole would then have the hole on both sides: it goes too, and so does a corner left with no edge.',
+      'Return false and change nothing when the dissolve does not apply: two faces that share a corner besides the ends of the edge (the merged face would pass through it twice), and on the boundary, a face that cannot become a hole (one that touches the boundary only at a corner, or a face with the hole all around).',
+    ],
+    hints: [
+      'Between two faces: give every halfedge of the second face the first face, then link prev(h) to next(twin(h)) and prev(twin(h)) to next(h). Delete the edge and the second face.',
+      "The two ends of the edge, and the face you keep, may have had one of the edge's halfedges as their halfedge: give them another.",
+      "On the boundary, the face's halfedges keep their next and prev: they become a hole's loop. A corner that was inside the mesh is now on the boundary, so its halfedge must be the one of those that leaves it.",
+      'An edge with the hole on both sides: splice it out of the loops by relinking the halfedges around its two ends.',
+    ],
+    starter: starter('input: an edge id. Dissolve it and return true, or return false.', '  const h = mesh.edgeHalfedge(input);\n  return false;'),
+    fixtures: [
+      { name: 'an edge between two triangles inside a disk', shapes: [['disk', 2]], input: 10 },
+      { name: 'an edge of a cube (two quads become a hexagon)', shapes: [['cube']], input: 0 },
+      { name: 'an edge inside a grid of quads', shapes: [['grid', 3, 3, 1]], input: 5 },
+      hidden('an edge on the boundary of a disk', 'An edge on the boundary is dissolved by making its face part of the hole.', { shapes: [['disk', 1]], input: 1 }),
+      hidden('an edge on the boundary at the end of a strip', 'When the face joins the hole, its other edges along the hole go too (the hole on both sides), and so does a corner left with no edge.', { shapes: [['strip', 3]], input: 4 }),
+      hidden('an edge whose faces share another corner (refused)', 'Two faces that share a corner besides the ends of the edge are not merged: return false and change nothing.', { off: SLIVER_UNDER_PENTAGON, input: 0 }),
+      hidden('an edge on the boundary whose face touches the hole at a corner (refused)', 'A face that would touch the hole at a corner only (a pinch) does not become a hole: return false and change nothing.', { shapes: [['strip', 3]], input: 0 }),
+      hidden('an edge of a lone triangle (refused)', 'A face with the hole all around does not become a hole (nothing would be left of it): return false and change nothing.', { shapes: [['singleTriangle']], input: 0 }),
+    ],
+    reference: (mesh, e) => !canDissolveEdge(mesh, id(e)) && (dissolveEdge(mesh, id(e)), true),
+  },
+  {
+    id: 'dissolve-vertex',
+    title: 'Dissolve a vertex',
+    kind: 'edit',
+    answer: 'face',
+    refusal: -1,
+    task: [
+      'Remove vertex `input` and all its edges: the faces around it merge into one face. Return the merged face.',
+      'The merged face runs round what is left of the faces: for each face around the vertex, its sides away from the vertex, one face after the other.',
+      'On the boundary, the faces do not merge with the hole: the faces around the vertex merge, and a new edge between its two neighbours along the boundary closes the merged face (the hole now runs along that edge).',
+      'Return -1 and change nothing when the dissolve does not apply: the merged face would pass through a vertex twice, or have fewer than 3 sides; on the boundary, a vertex with one face (nothing to merge), or one whose two neighbours along the boundary are already joined by an edge.',
+    ],
+    hints: [
+      'List the outgoing halfedges x counter-clockwise. The face of x, face(x), keeps the path from next(x) round to prev(prev(x)): link the end of each path to the start of the next one.',
+      'Before writing, walk those paths and collect their corners: a corner met twice means the merged face would pass through it twice.',
+      'Keep one face (the first), give every halfedge of the paths that face, and delete the others, the edges at the vertex, and the vertex.',
+      'On the boundary, start from the boundary halfedge: the hole runs a → v → b. The new edge has halfedge b → a in the merged face and a → b on the hole, between the hole halfedges before a and after b.',
+      'A neighbour whose halfedge ran to the vertex needs another; so does the kept face if its halfedge was one of the edges that go.',
+    ],
+    starter: starter('input: a vertex id. Dissolve it; return the merged face, or -1.', '  const start = mesh.vertexHalfedge(input);\n  return -1;'),
+    fixtures: [
+      { name: 'the centre of a disk (six triangles become a hexagon)', shapes: [['disk', 1]], input: 0 },
+      { name: 'a corner of a cube (three quads become a hexagon)', shapes: [['cube']], input: 0 },
+      { name: 'a vertex inside a grid of quads', shapes: [['grid', 3, 3, 1]], input: 5 },
+      hidden('a vertex on the boundary of a disk', 'A vertex on the boundary does not merge its faces with the hole: a new edge between its two neighbours along the boundary closes the merged face.', { shapes: [['disk', 2]], input: 7 }),
+      hidden('a corner of a tetrahedron', 'Dissolving a corner of a tetrahedron leaves two triangles on the same three corners, back to back: a valid closed mesh.', { shapes: [['tetrahedron']], input: 0 }),
+      hidden('a corner of a grid in one face (refused)', 'A boundary vertex with one face has nothing to merge: return -1 and change nothing.', { shapes: [['grid', 2, 2]], input: 2 }),
+      hidden('a boundary vertex whose neighbours are already joined (refused)', 'When the two neighbours along the boundary are already joined, the closing edge would be a second edge between them: return -1 and change nothing.', { shapes: [['annulus', 3]], input: 0 }),
+      hidden('a vertex whose faces share another corner (refused)', 'The merged face must not pass through a vertex twice: return -1 and change nothing.', { off: SLIVER_UNDER_PENTAGON, input: 0 }),
+      hidden('a vertex of a pillow of two triangles (refused)', 'A merged face needs 3 sides: return -1 and change nothing.', { off: PILLOW, input: 0 }),
+    ],
+    reference: (mesh, v) => (canDissolveVertex(mesh, id(v)) ? -1 : dissolveVertex(mesh, id(v)).face),
+  },
+  {
+    id: 'collapse-face',
+    title: 'Collapse a face',
+    kind: 'edit',
+    answer: 'vertex',
+    refusal: -1,
+    task: [
+      'Shrink face `input` to one vertex at its centroid (the average of its corners): its corners merge into that vertex, and its edges and the face itself disappear. Return the vertex that remains.',
+      'Each face across a side of the face loses that side. A triangle across a side disappears, and its two other edges, which now join the same two vertices, become one edge. A face of four or more sides keeps the rest.',
+      'Return -1 and change nothing when the collapse would break the mesh: a face across several sides left with fewer than 3; an edge between two corners that is not a side (it would become a loop); a vertex joined to two corners other than across a triangle beside the face (the link condition); a face, or the hole, that would meet the new vertex at two places; triangles on every side meeting at one vertex (a tetrahedron); a single edge, or two triangles on the same three corners, left around the new vertex; a face on its own.',
+    ],
+    hints: [
+      'Keep corner 0 as the new vertex: every other halfedge that left a corner now leaves it. Move it to the centroid.',
+      "Check everything before the first write: list the halfedges leaving each corner between the face's two edges there (its spokes), counter-clockwise; around the new vertex they come corner after corner.",
+      'Across side i, the loop of the face beyond runs … → prev(t) → t → next(t) → …, with t = twin(side i): link prev(t) to next(t) and t is out.',
+      'Across a triangle, link its halfedge from corner i to the third corner into the place of the one from corner i + 1 (the edge that goes).',
+      "Afterwards the new vertex needs a halfedge (its boundary one if it has one), and a face whose halfedge went needs another.",
+    ],
+    starter: starter('input: a face id. Collapse it; return the vertex that remains, or -1.', '  return -1;'),
+    fixtures: [
+      { name: 'a triangle inside a disk', shapes: [['disk', 2]], input: 0 },
+      { name: 'a quad of a cube', shapes: [['cube']], input: 0 },
+      { name: 'a quad inside a grid of quads', shapes: [['grid', 3, 3, 1]], input: 4 },
+      hidden('a quad at the corner of a grid', 'A face along the boundary is collapsed too: the hole loses the sides it shared with the face.', { shapes: [['grid', 2, 2, 1]], input: 0 }),
+      hidden('a triangle at the centre of a disk, on its rim', 'A face with a side on the boundary and triangles beside it is collapsed too.', { shapes: [['disk', 1]], input: 0 }),
+      hidden('a face of a tetrahedron (refused)', 'When the triangles on every side meet at one vertex, only an edge would be left: return -1 and change nothing.', { shapes: [['tetrahedron']], input: 0 }),
+      hidden('a triangle whose corners touch the boundary at two places (refused)', 'A face that meets the hole at two places would pinch the surface: return -1 and change nothing.', { shapes: [['grid', 2, 2]], input: 3 }),
+      hidden('a triangle of a sphere whose corners share a neighbour (refused)', 'A vertex joined to two corners, other than across a triangle beside the face, would be joined to the new vertex twice (the link condition): return -1 and change nothing.', { shapes: [['uvSphere', 3, 3]], input: 1 }),
+      hidden('a lone triangle (refused)', 'A face on its own has nothing to collapse into: return -1 and change nothing.', { shapes: [['singleTriangle']], input: 0 }),
+    ],
+    reference: (mesh, f) => (canCollapseFace(mesh, id(f)) ? -1 : collapseFace(mesh, id(f)).vertex),
+  },
+  {
+    id: 'make-boundary',
+    title: 'Make a face a hole',
+    kind: 'edit',
+    answer: 'exact',
+    refusal: false,
+    task: [
+      'Turn face `input` into a hole: its halfedges lose their face (face -1) and keep their next and prev, so they run round the hole. Return true.',
+      'Where the face lay along a hole, the edges between them now have the hole on both sides: they go, and the two holes become one (or, where the face touched the hole along separate stretches, the hole splits). A corner left with no edge goes too.',
+      "Return false and change nothing when the face cannot become a hole: a corner already on the boundary where neither of the face's edges is (the two holes would meet at that vertex only, a pinch), or a face with the hole all around it (nothing would be left).",
+    ],
+    hints: [
+      'Before writing, note for each side whether its twin is on the boundary, and for each corner whether it is on the boundary.',
+      "A corner that was inside the mesh is now on the boundary: its halfedge must be its outgoing boundary halfedge, the face's side that leaves it.",
+      'An edge with the hole on both sides, halfedge g and its twin: link prev(g) to next(twin(g)) and prev(twin(g)) to next(g), then delete the edge. If one end had no other edge, the loop turns back there: skip it and delete that vertex.',
+    ],
+    starter: starter('input: a face id. Make it a hole and return true, or return false.', '  return false;'),
+    fixtures: [
+      { name: 'a triangle inside a disk', shapes: [['disk', 2]], input: 0 },
+      { name: 'a quad of a cube', shapes: [['cube']], input: 0 },
+      { name: 'a quad inside a grid of quads', shapes: [['grid', 3, 3, 1]], input: 4 },
+      hidden('a triangle on the rim of a disk', 'A face along the hole joins it: the edge between them, with the hole on both sides now, goes.', { shapes: [['disk', 2]], input: 6 }),
+      hidden('a triangle in the middle of a strip', 'A face that touches the hole along two separate stretches splits it into two loops.', { shapes: [['strip', 3]], input: 1 }),
+      hidden('the triangle at a corner of a grid', 'A corner that only this face had is left with no edge: it goes too.', { shapes: [['grid', 2, 2]], input: 2 }),
+      hidden('a triangle touching the rim at a corner (refused)', 'A corner already on the boundary where neither edge of the face is would pinch the surface: return false and change nothing.', { shapes: [['disk', 2]], input: 8 }),
+      hidden('a lone triangle (refused)', 'A face with the hole all around would leave nothing: return false and change nothing.', { shapes: [['singleTriangle']], input: 0 }),
+    ],
+    reference: (mesh, f) => !canMakeBoundary(mesh, id(f)) && (makeBoundary(mesh, id(f)), true),
   },
   {
     id: 'loop-subdivision',
