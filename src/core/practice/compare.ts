@@ -131,9 +131,11 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
   for (const { id, corners } of cycles(before, false)) {
     for (const c of corners) facesAt.set(c, [...(facesAt.get(c) ?? []), { face: id, corners }]);
   }
+  // the fixture's own triangles, untouched (a triangle with no area, too, is no face to cut)
+  const triangles = new Set(cycles(before, false).filter(({ corners }) => corners.length === 3).map(({ corners }) => canonical(corners)));
   for (const { id, corners } of cycles(yours, false)) {
     const cycle = mapped(corners);
-    if (kept.has(canonical(cycle))) continue;
+    if (kept.has(canonical(cycle)) || triangles.has(canonical(cycle))) continue;
     if (cycle.length !== 3) return `your f${id} has ${cycle.length} sides: every face the library cut must be cut into triangles`;
     const within = (facesAt.get(cycle[0]) ?? []).find(({ corners }) => inOrderAround(corners, cycle));
     if (!within) return `your f${id} (${corners.map((v) => `v${v}`).join(' → ')}) is not a triangle cut from one face of the fixture, in its order`;

@@ -7,12 +7,14 @@
 import { boundaryLoops, vertexAdjacentVertices } from '../circulators.js';
 import { canCollapseEdge, collapseEdge } from '../edits/collapse.js';
 import { canFlipEdge, flipEdge } from '../edits/flip.js';
+import { triangulateMesh } from '../edits/triangulate.js';
 import { pokeFace } from '../edits/poke.js';
 import { bevelEdge, bevelVertex, canBevelEdge, canBevelVertex } from '../edits/bevel.js';
 import { canDissolveEdge, canDissolveVertex, dissolveEdge, dissolveVertex } from '../edits/dissolve.js';
 import { canCollapseFace, collapseFace } from '../edits/collapse-face.js';
 import { canExtrudeFace, extrudeFace } from '../edits/extrude.js';
 import { canMakeBoundary, makeBoundary } from '../edits/make-boundary.js';
+import { canWeldEdges, weldEdges } from '../edits/weld.js';
 import { splitEdgeTriangulated } from '../edits/split-edge.js';
 import { subdivide } from '../subdivision/index.js';
 import type { Exercise, ExerciseInput, Fixture } from './exercise.js';
@@ -38,6 +40,21 @@ const hidden = (name: string, rule: string, fixture: Omit<Fixture, 'name' | 'hid
  */
 /** Two triangles on the same three corners, back to back: closed, every vertex with 2 edges. */
 const PILLOW = 'OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n';
+
+/**
+ * An L of six corners, listed from v2 (2, 1), where a fan from the first corner folds over:
+ * ```
+ *    v5 ──── v4
+ *    │        │
+ *    │       v3 ──── v2
+ *    │                │
+ *    v0 ───────────── v1
+ * ```
+ */
+const L_HEXAGON = 'OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 2 3 4 5 0 1\n';
+
+/** A quad whose four corners lie on the x axis (no area), and a unit square above it. */
+const FLAT_QUAD_AND_SQUARE = 'OFF\n8 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n0 1 0\n1 1 0\n1 2 0\n0 2 0\n4 0 1 2 3\n4 4 5 6 7\n';
 
 const SLIVER_UNDER_PENTAGON = 'OFF\n5 2 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n1 0 0\n5 0 4 1 2 3\n3 0 1 4\n';
 
@@ -468,6 +485,72 @@ export const exercises: Exercise[] = [
       hidden('a lone triangle (refused)', 'A face with the hole all around would leave nothing: return false and change nothing.', { shapes: [['singleTriangle']], input: 0 }),
     ],
     reference: (mesh, f) => !canMakeBoundary(mesh, id(f)) && (makeBoundary(mesh, id(f)), true),
+  },
+  {
+    id: 'weld-edges',
+    title: 'Weld two boundary edges',
+    kind: 'edit',
+    answer: 'exact',
+    refusal: false,
+    task: [
+      'The input is `[e1, e2]`, two edges on the boundary. Glue them into one edge with a face on each side, and return true.',
+      "Which ends meet follows the faces' orientation: with h1 (a1 → b1) and h2 (a2 → b2) the boundary halfedges of the two edges, b2 merges into a1 and a2 into b1, each pair at its midpoint. e1 stays, and h1 takes the place of twin(h2) in its face; e2 and the merged-away vertices go.",
+      'Where the two edges follow one another along the hole (they share an end, a "zip"), only their other ends merge, and the shared vertex is no longer on the boundary.',
+      'Return false and change nothing when the weld does not apply: an edge that is not on the boundary, the same edge twice, two ends that would merge that are already joined by an edge or are corners of one face, and a merge that would join two vertices by two edges.',
+    ],
+    hints: [
+      'Check each pair that merges (a1 with b2, b1 with a2; skip a pair that is already one vertex): look at the halfedges leaving both, for an edge between them, a face they share, and neighbours they would then share.',
+      "Every halfedge that left b2 (other than e2's) now leaves a1, and every one that left a2 now leaves b1.",
+      'The hole: link prev(h2) to next(h1), and prev(h1) to next(h2), except at a zip, where the hole closes.',
+      'Each merged vertex still on the boundary needs its outgoing boundary halfedge as its halfedge.',
+    ],
+    starter: starter('input: [e1, e2], two boundary edges. Weld them and return true, or return false.', '  const [e1, e2] = input;\n  return false;'),
+    fixtures: [
+      { name: 'two triangles side by side', shapes: [['singleTriangle'], ['singleTriangle']], input: [1, 5] },
+      { name: 'two squares side by side', shapes: [['grid', 1, 1, 1], ['grid', 1, 1, 1]], input: [1, 7] },
+      { name: 'a triangle onto the rim of a disk', shapes: [['disk', 1], ['singleTriangle']], input: [11, 14] },
+      hidden('the two ends of a strip (it becomes a ring)', 'Two edges of one hole, apart, are welded too: the hole splits into two loops.', { shapes: [['strip', 3]], input: [4, 10] }),
+      hidden('the two straight sides of a fan (a zip)', 'Two edges that follow one another along the hole are zipped: only their other ends merge, and the shared vertex leaves the boundary.', { shapes: [['fan', 4, 4.5]], input: [0, 8] }),
+      hidden('two sides of one triangle (refused)', 'Two ends already joined by an edge cannot merge (the edge would become a loop): return false and change nothing.', { shapes: [['singleTriangle']], input: [0, 1] }),
+      hidden('an edge inside a disk (refused)', 'Only boundary edges can be welded: return false and change nothing.', { shapes: [['disk', 1]], input: [0, 1] }),
+      hidden('a weld that would double an edge (refused)', 'A weld that would join two vertices by two edges is refused: return false and change nothing.', { shapes: [['strip', 3]], input: [3, 10] }),
+      hidden('the same edge twice (refused)', 'A weld joins two different edges: return false and change nothing.', { shapes: [['disk', 1]], input: [1, 1] }),
+    ],
+    reference: (mesh, input) => {
+      const [e1, e2] = input as readonly number[];
+      return !canWeldEdges(mesh, e1, e2) && (weldEdges(mesh, e1, e2), true);
+    },
+  },
+  {
+    id: 'triangulate',
+    title: 'Triangulate the mesh',
+    kind: 'edit',
+    answer: 'none',
+    compare: 'triangulation',
+    task: [
+      'Cut every face of more than three sides into triangles, in place, by adding diagonals: edges inside the face between two of its corners. A face of k sides becomes k − 2 triangles, with k − 3 new edges. Return nothing.',
+      'Any diagonals are right, as long as every triangle lies inside its face: none may fold over (turn the other way round than the face) or have no area, and no diagonal may join two vertices that an edge already joins.',
+      'A face that cannot be cut so (its corners all on one line: it has no area) is left as it is.',
+    ],
+    hints: [
+      'A fan from one corner (joining it to every other corner) is right for a convex face. For the others, cut off an "ear": a corner that turns the way the face turns, with no other corner inside its triangle; repeat on what is left.',
+      "To see which way a corner turns, lay the face flat: the normal n is the sum of the cross products of consecutive corners (Newell); a corner turns the face's way when (b − a) × (c − b) points along n.",
+      'Give every new triangle its three halfedges: old sides where it has them, and new edges for the diagonals (one edge for the two triangles on either side). The face keeps its id as one of the triangles; every corner keeps its halfedge.',
+      'List the faces first: the triangles you make are faces too, and need no visit.',
+    ],
+    starter: starter('no input. Cut every face of more than three sides into triangles.', '  for (const f of mesh.faces()) {\n    // cut f here\n  }'),
+    fixtures: [
+      { name: 'a cube (six quads)', shapes: [['cube']] },
+      { name: 'a grid of quads', shapes: [['grid', 2, 2, 1]] },
+      { name: 'a ring of quads and a tetrahedron', shapes: [['annulus', 5], ['tetrahedron']] },
+      hidden('an L-shaped hexagon', 'A face that is not convex must be cut along diagonals inside it: no triangle may fold over.', { off: L_HEXAGON }),
+      hidden('a pentagon with a corner on a straight side, over a flat triangle', 'No triangle may have no area (three corners on a line), and no diagonal may double an edge that is already there.', { off: SLIVER_UNDER_PENTAGON }),
+      hidden('a quad with its corners on one line, beside a square', 'A face with no area cannot be cut into triangles: leave it as it is.', { off: FLAT_QUAD_AND_SQUARE }),
+      hidden('a torus of quads', 'Every face of more than three sides is cut, whatever the shape of the mesh.', { shapes: [['torus', 4, 3]] }),
+    ],
+    reference: (mesh) => {
+      triangulateMesh(mesh);
+    },
   },
   {
     id: 'loop-subdivision',
