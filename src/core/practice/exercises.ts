@@ -42,16 +42,17 @@ const hidden = (name: string, rule: string, fixture: Omit<Fixture, 'name' | 'hid
 const PILLOW = 'OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n';
 
 /**
- * An L of six corners, listed from v2 (2, 1), where a fan from the first corner folds over:
+ * An L of six corners, listed from v2 (3, 1), where a fan from the first corner folds over (and
+ * whose centroid, (4/3, 1), is none of its corners):
  * ```
  *    v5 ──── v4
  *    │        │
- *    │       v3 ──── v2
- *    │                │
- *    v0 ───────────── v1
+ *    │       v3 ─────────── v2
+ *    │                       │
+ *    v0 ─────────────────── v1
  * ```
  */
-const L_HEXAGON = 'OFF\n6 1 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n6 2 3 4 5 0 1\n';
+const L_HEXAGON = 'OFF\n6 1 0\n0 0 0\n3 0 0\n3 1 0\n1 1 0\n1 2 0\n0 2 0\n6 2 3 4 5 0 1\n';
 
 /** A quad whose four corners lie on the x axis (no area), and a unit square above it. */
 const FLAT_QUAD_AND_SQUARE = 'OFF\n8 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n0 1 0\n1 1 0\n1 2 0\n0 2 0\n4 0 1 2 3\n4 4 5 6 7\n';
@@ -573,6 +574,34 @@ export const exercises: Exercise[] = [
       { name: 'two components', shapes: [['tetrahedron'], ['fan', 3]] },
     ],
     reference: (mesh) => subdivide(mesh, 'loop', 1),
+  },
+  {
+    id: 'catmull-clark',
+    title: 'Catmull-Clark subdivision',
+    kind: 'edit',
+    answer: 'none',
+    task: [
+      'Apply one level of Catmull-Clark subdivision to the mesh, in place: every face of n sides becomes n quads, and every old vertex moves. Faces may have any number of sides.',
+      'New points: a face point at the centroid of each face (the average of its corners); an edge point on each edge at the average of its two ends and the two face points beside it (on the boundary, the midpoint of the edge). Each quad joins a face point, an edge point, an old corner and the next edge point.',
+      'Old vertices, with n edges: (F + 2R + (n − 3)·P) / n, where P is the vertex, F the average of the n face points around it and R the average of the midpoints of its n edges. On the boundary, 3/4 of itself and 1/8 of each of its two neighbours along the boundary, except a corner with 2 edges, which stays where it is.',
+    ],
+    hints: [
+      'Compute every new position from the old mesh first (face points, edge points, old vertices), and only then change the connectivity.',
+      'Split every old edge at its edge point (your split-edge, without cutting the faces): every face now has twice as many sides, old corners and edge points taking turns.',
+      'Then, in each face, add its face point and join it to each edge point of the face: n new edges, and n quads (the face keeps its id as one of them).',
+      'Remember the lists of old vertices, edges and faces before you start: the ones you make need no visit.',
+    ],
+    starter: starter('no input. Subdivide the mesh once, in place.', '  const oldVertices = mesh.vertices();\n  const oldEdges = mesh.edges();\n  const oldFaces = mesh.faces();\n'),
+    fixtures: [
+      { name: 'a cube', shapes: [['cube']] },
+      { name: 'a tetrahedron (triangles)', shapes: [['tetrahedron']] },
+      { name: 'a torus of quads', shapes: [['torus', 4, 3]] },
+      hidden('a grid of quads', 'On the boundary, edge points are midpoints and vertices follow the boundary (3/4 of themselves, 1/8 of each boundary neighbour); a corner with 2 edges stays.', { shapes: [['grid', 2, 2, 1]] }),
+      hidden('a disk of triangles', 'The boundary rules hold for triangles too, and an interior vertex with 6 edges moves by the same formula as any other.', { shapes: [['disk', 1]] }),
+      hidden('an L-shaped hexagon alone', 'A face of any number of sides becomes that many quads around its face point.', { off: L_HEXAGON }),
+      hidden('two components: a cube and a fan', 'Every component is subdivided.', { shapes: [['cube'], ['fan', 3]] }),
+    ],
+    reference: (mesh) => subdivide(mesh, 'catmull-clark', 1),
   },
 ];
 
