@@ -321,7 +321,7 @@ export const exercises: Exercise[] = [
       { name: 'a corner of a tetrahedron, amount 0.3', shapes: [['tetrahedron']], input: { vertex: 1, amount: 0.3 } },
       hidden('a vertex on the boundary (4 edges)', 'A vertex on the boundary is bevelled too: the new face borders the hole along one side.', { shapes: [['disk', 2]], input: { vertex: 7, amount: 0.3 } }),
       hidden('a vertex on the boundary with two faces', 'A boundary vertex with 3 edges becomes a triangle on the hole.', { shapes: [['disk', 1]], input: { vertex: 2, amount: 0.4 } }),
-      hidden('a corner of a grid of quads (2 edges: refused)', 'A vertex with fewer than 3 edges is refused: the face would have fewer than 3 sides. Return -1 and change nothing.', { shapes: [['grid', 2, 2, 1]], input: { vertex: 0, amount: 0.3 } }),
+      hidden('a corner of a grid of quads, with 2 edges (refused)', 'A vertex with fewer than 3 edges is refused (the face would have fewer than 3 sides): return -1 and change nothing.', { shapes: [['grid', 2, 2, 1]], input: { vertex: 0, amount: 0.3 } }),
       hidden('an amount of 1.5 (refused)', 'An amount outside 0 … 1 is refused: return -1 and change nothing.', { shapes: [['cube']], input: { vertex: 3, amount: 1.5 } }),
     ],
     reference: (mesh, input) => {
@@ -354,8 +354,8 @@ export const exercises: Exercise[] = [
       { name: 'an edge of a tetrahedron, amount 0.2', shapes: [['tetrahedron']], input: { edge: 3, amount: 0.2 } },
       hidden('an edge from the centre of a disk to its rim', 'An edge between two faces with an end on the boundary is bevelled too: the new face borders the hole at that end.', { shapes: [['disk', 1]], input: { edge: 0, amount: 0.3 } }),
       hidden('an edge across a strip (both ends on the boundary)', 'An edge between two faces with both ends on the boundary is bevelled too: the new face borders the hole at each end.', { shapes: [['strip', 3]], input: { edge: 1, amount: 0.25 } }),
-      hidden('an edge on the boundary (refused)', 'An edge on the boundary is refused: a bevel puts a face between two faces. Return -1 and change nothing.', { shapes: [['disk', 1]], input: { edge: 1, amount: 0.3 } }),
-      hidden('an edge of a pillow of two triangles (refused)', 'An edge whose ends have fewer than 5 edges between them is refused: the new face would have fewer than 3 sides. Return -1 and change nothing.', { off: PILLOW, input: { edge: 0, amount: 0.3 } }),
+      hidden('an edge on the boundary (refused)', 'An edge on the boundary is refused (a bevel puts a face between two faces): return -1 and change nothing.', { shapes: [['disk', 1]], input: { edge: 1, amount: 0.3 } }),
+      hidden('an edge of a pillow of two triangles (refused)', 'An edge whose ends have fewer than 5 edges between them is refused (the new face would have fewer than 3 sides): return -1 and change nothing.', { off: PILLOW, input: { edge: 0, amount: 0.3 } }),
       hidden('an amount of -0.5 (refused)', 'An amount outside 0 … 1 is refused: return -1 and change nothing.', { shapes: [['cube']], input: { edge: 4, amount: -0.5 } }),
     ],
     reference: (mesh, input) => {
@@ -450,7 +450,7 @@ export const exercises: Exercise[] = [
       { name: 'a quad of a cube', shapes: [['cube']], input: 0 },
       { name: 'a quad inside a grid of quads', shapes: [['grid', 3, 3, 1]], input: 4 },
       hidden('a quad at the corner of a grid', 'A face along the boundary is collapsed too: the hole loses the sides it shared with the face.', { shapes: [['grid', 2, 2, 1]], input: 0 }),
-      hidden('a triangle at the centre of a disk, on its rim', 'A face with a side on the boundary and triangles beside it is collapsed too.', { shapes: [['disk', 1]], input: 0 }),
+      hidden('a triangle of a small disk, with a side on the rim', 'A face with a side on the boundary and triangles beside it is collapsed too.', { shapes: [['disk', 1]], input: 0 }),
       hidden('a face of a tetrahedron (refused)', 'When the triangles on every side meet at one vertex, only an edge would be left: return -1 and change nothing.', { shapes: [['tetrahedron']], input: 0 }),
       hidden('a triangle whose corners touch the boundary at two places (refused)', 'A face that meets the hole at two places would pinch the surface: return -1 and change nothing.', { shapes: [['grid', 2, 2]], input: 3 }),
       hidden('a triangle of a sphere whose corners share a neighbour (refused)', 'A vertex joined to two corners, other than across a triangle beside the face, would be joined to the new vertex twice (the link condition): return -1 and change nothing.', { shapes: [['uvSphere', 3, 3]], input: 1 }),
