@@ -1,8 +1,12 @@
 /**
- * The built-in exercises, easiest first: queries that walk the pointers, then the local edits of
- * every halfedge course, then one level of Loop subdivision. Each reference is the library's own
- * function; the fixtures hold the hard cases (boundaries, valence 3, a forbidden collapse, several
- * components).
+ * The built-in exercises, easiest first: queries that walk the pointers, the local edits of every
+ * halfedge course (flip, split, collapse), the local operations of the halfedge assignment (inset
+ * a vertex, extrude, bevel, dissolve, collapse a face, make a hole, weld, triangulate), then one
+ * level of Loop and of Catmull-Clark subdivision. Each reference is the library's own function;
+ * the fixtures hold the hard cases (boundaries, valence 3, a forbidden collapse, several
+ * components), and those of the assignment's operations are hidden: graded by the rule they
+ * state, their mesh never shown (see `Fixture.hidden`). A solution that is right for each, written
+ * against the mesh API alone, is in `tests/practice/solutions/`.
  */
 import { boundaryLoops, vertexAdjacentVertices } from '../circulators.js';
 import { canCollapseEdge, collapseEdge } from '../edits/collapse.js';
