@@ -7,6 +7,7 @@ import { buildMesh } from '../build.js';
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { readMesh } from '../io/read.js';
+import { encodeText } from '../io/text.js';
 import * as shapes from '../shapes.js';
 import { mergeSoups, type PolygonSoup } from '../soup.js';
 
@@ -104,7 +105,7 @@ export function fixtureMesh(fixture: Fixture, files: ReadonlyMap<string, Uint8Ar
     if (!bytes) throw new InvalidInputError(`fixture "${fixture.name}": the file ${fixture.file} was not given`);
     soup = readMesh(bytes, { fileName: fixture.file }).soup;
   } else if (fixture.off !== undefined) {
-    soup = readMesh(new TextEncoder().encode(fixture.off), { fileName: 'fixture.off' }).soup;
+    soup = readMesh(encodeText(fixture.off), { fileName: 'fixture.off' }).soup;
   } else {
     soup = sideBySide((fixture.shapes ?? []).map(shapeSoup));
   }
