@@ -9,6 +9,11 @@
  *   next-prev:   ok   ok   BAD  ok   ok   ok      fixed again: a correct state in between, not blamed
  *   vertex-h:    ok   ok   ok   BAD  BAD  BAD     still broken at the end: first broken = w3
  * ```
+ *
+ * A hidden fixture is graded the same way, but what its checks say names nothing of its mesh (only
+ * its rule), and its writes and reads are left out of the result. On a hidden fixture the library
+ * handles, a solution that refuses cleanly (returns the exercise's `refusal` and changes nothing)
+ * earns `PARTIAL_CREDIT` of each check, once every fixture that is shown passes.
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import { validate, type Violation } from '../validate.js';
@@ -137,7 +142,8 @@ export function gradeFixture(
   if (fixture.hidden) {
     for (const c of checks) {
       c.hidden = true;
-      const why = c.status === 'partial' || (refusedCleanly && !libraryRefuses) ? c.message : hiddenFailure(c, output, refusal, libraryRefuses);
+      // a clean refusal's message names no element; any other is said again without ids
+      const why = refusedCleanly && !libraryRefuses ? c.message : hiddenFailure(c, output, refusal, libraryRefuses);
       if (c.status !== 'passed') c.message = `${why}. A hidden case: ${fixture.rule ?? 'its mesh is not shown'}`;
     }
     return { fixture: fixture.name, hidden: true, checks, writes: [], visits: [], reads: 0, firstBroken: null, after };
@@ -150,7 +156,7 @@ function hiddenFailure(check: Check, output: RunOutput, refusal: -1 | false | un
   const error = output.error;
   if (error) {
     const where = error.line === null ? '' : ` at line ${error.line}`;
-    return error.name === 'BudgetError' ? `your code was stopped${where}: it ran too long or used too much` : error.name === 'NotRun' ? error.message : `your code threw ${error.name}${where}`;
+    return error.name === 'BudgetError' ? `your code was stopped${where}: it went past its budget of time, pointer reads, new elements or memory` : error.name === 'NotRun' ? error.message : `your code threw ${error.name}${where}`;
   }
   if (check.name.endsWith(': valid mesh')) return 'the mesh your code left breaks an invariant';
   if (check.name.endsWith(': answer')) return output.writes.length > 0 ? 'a query must leave the mesh as it is, but your code wrote to it' : "your answer is not the library's";
