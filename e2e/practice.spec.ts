@@ -133,6 +133,27 @@ test.describe('practice mode', () => {
     expect(appErrors(page)).toEqual([]);
   });
 
+  test('a hidden fixture is listed by its rule and never shown; a hard case refused cleanly earns part of its point', async ({ page }) => {
+    await openAppAt(page, '/?exercise=poke-face');
+    await expect(page.locator('.practice-task h3')).toHaveText('Inset a vertex (poke a face)');
+    await page.evaluate(() => window.halfedgeLab.practice.load('bevel-vertex'));
+    await expect(page.locator('#status')).toHaveText('Practice: Bevel a vertex, a corner of a cube, amount 0.25, input { vertex: 0, amount: 0.25 }.');
+    await typeAndRun(page, solution('wrong/bevel-refuses-boundary'));
+    await expect(page.locator('.practice-summary')).toHaveText('10 of 14 checks pass (13.2 of 14 points: a hard case refused earns 80 % of its points).', { timeout: 15_000 });
+    const partial = page.locator('.practice-checks li.partial');
+    await expect(partial).toHaveCount(4);
+    await expect(partial.first()).toContainText('(hidden: its mesh is not shown)');
+    await expect(partial.first()).toContainText('A hidden case: A vertex on the boundary is bevelled too');
+    // the writes of the fixtures shown only; the view shows a fixture that is not hidden
+    const picked = await page.locator('.practice-writes select option').allTextContents();
+    expect(picked).toHaveLength(3);
+    expect(picked.some((name) => name.startsWith('hidden'))).toBe(false);
+    const result = await page.evaluate(() => window.halfedgeLab.practice.run());
+    expect(result).toMatchObject({ score: 13.2, maxScore: 14 });
+    expect(result.fixtures.filter((f) => f.hidden).every((f) => f.writes.length === 0 && f.firstBroken === null)).toBe(true);
+    expect(appErrors(page)).toEqual([]);
+  });
+
   test('the automation object runs a solution and reports the checks, the writes and the first broken write', async ({ page }) => {
     await openAppAt(page, '/');
     expect(await page.evaluate(() => window.halfedgeLab.practice.list())).toContain('loop-subdivision');

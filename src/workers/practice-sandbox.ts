@@ -14,14 +14,14 @@
  * worker that reaches the engine's own limit takes the whole page down with it.
  */
 import { deserializeMesh, type SerializedMesh } from '../core/index.js';
-import { BudgetError, type PracticeBudget, runSolution, type RunOutput, type Solution, SOLUTION_FILE, SolutionError, solutionBody, solutionLine } from '../core/practice/index.js';
+import { BudgetError, type ExerciseInput, type PracticeBudget, runSolution, type RunOutput, type Solution, SOLUTION_FILE, SolutionError, solutionBody, solutionLine } from '../core/practice/index.js';
 
 /** Memory a solution may use (its arrays, in the sandbox; the `grade` command's worker thread, in all). */
 export const MEMORY_LIMIT_MB = 256;
 
 export interface SandboxRequest {
   source: string;
-  runs: { mesh: SerializedMesh; input: number | undefined }[];
+  runs: { mesh: SerializedMesh; input: ExerciseInput | undefined }[];
   budget?: PracticeBudget;
 }
 

@@ -69,7 +69,25 @@ describe('grade on the command line', () => {
     const ids = stdout.trim().split('\n');
     expect(ids).toContain('flip-edge');
     expect(ids).toContain('collapse-edge');
+    for (const id of ['inset-vertex', 'extrude-face', 'bevel-vertex', 'bevel-edge', 'dissolve-edge', 'dissolve-vertex', 'collapse-face', 'make-boundary', 'weld-edges', 'triangulate', 'catmull-clark']) {
+      expect(ids).toContain(id);
+    }
     expect(new Set(ids).size).toBe(ids.length);
+  });
+
+  it('grades poke-face, the older id of inset-vertex, as inset-vertex', async () => {
+    const { status, stdout } = await grade('poke-face', 'tests/practice/solutions/inset-vertex.js');
+    expect(status).toBe(0);
+    expect(stdout).toContain('12 of 12 checks pass; 12 of 12 points');
+  });
+
+  it('scores a hard case refused cleanly 0.8 a check in results.json, out of the same max_score, and exits 1', async () => {
+    const { status, stdout } = await grade('bevel-vertex', wrong('bevel-refuses-boundary'), '--json');
+    expect(status).toBe(1);
+    const results = JSON.parse(stdout);
+    expect(results.max_score).toBe(14);
+    expect(results.score).toBe(13.2);
+    expect(results.tests.filter((t: { score: number }) => t.score === 0.8)).toHaveLength(4);
   });
 
   it('stops code that never returns within the time limit, and does not run the rest', async () => {

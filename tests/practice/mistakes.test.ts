@@ -33,6 +33,50 @@ describe('a wrong solution is told what is wrong', () => {
     expect(inside.firstBroken!.line).toBe(30);
   });
 
+  it('an extrusion that never gives its new corners a halfedge: blamed on the first origin that starts from one', async () => {
+    const report = await grade('extrude-face', wrong('extrude-forgets-corner-halfedge'));
+    const cube = report.fixtures[0];
+    const { write, line, invariant } = cube.firstBroken!;
+    expect(invariant).toMatch(/^v(\d+) has no halfedge but 3 halfedges start from it$/);
+    expect(cube.writes[write]).toMatchObject({ field: 'origin', line: 43 });
+    expect(line).toBe(43);
+    expect(failures(report)[0]).toMatch(/since write \d+, origin\(h\d+\) = v\d+ at line 43/);
+    // the shape is right: only the handles are missing
+    expect(cube.checks[1].passed).toBe(true);
+  });
+
+  it("a vertex bevel that leaves its new sides without the wedge's face: the loop that mixes a face and no face, and the line that linked it", async () => {
+    const report = await grade('bevel-vertex', wrong('bevel-forgets-wedge-face'));
+    const corner = report.fixtures[0];
+    expect(corner.firstBroken!.invariant).toMatch(/^h\d+ is in f\d+ but next\(h\d+\) = h\d+ is in no face \(boundary\)$/);
+    expect(corner.writes[corner.firstBroken!.write].field).toBe('next');
+    expect(corner.firstBroken!.line).toBe(38);
+    expect(failures(report).join('\n')).toMatch(/your mesh has 3 boundary loops; the library's has 0/);
+  });
+
+  it('an edge dissolve that deletes the halfedge its end still names: blamed on the deleteEdge line', async () => {
+    const report = await grade('dissolve-edge', wrong('dissolve-edge-keeps-vertex-halfedge'));
+    const inside = report.fixtures[0];
+    expect(inside.firstBroken!.invariant).toMatch(/^v\d+'s halfedge h\d+ does not start at v\d+$/);
+    expect(inside.writes[inside.firstBroken!.write]).toMatchObject({ field: 'deleteEdge', line: 39 });
+    expect(failures(report)[0]).toContain('deleteEdge(e10) at line 39');
+  });
+
+  it('a face made a hole whose corners keep a halfedge that is not on the boundary: blamed on the first face(h) = -1', async () => {
+    const report = await grade('make-boundary', wrong('make-boundary-forgets-corners'));
+    const inside = report.fixtures[0];
+    expect(inside.firstBroken!.invariant).toMatch(/^v\d+ is on the boundary \(h\d+ leaves it\) but its halfedge h\d+ is not a boundary halfedge$/);
+    expect(failures(report)[0]).toMatch(/since write 1, face\(h\d+\) = -1 at line 28$/);
+  });
+
+  it('a triangulation by fans passes every convex face and fails the hidden ones with their rules', async () => {
+    const report = await grade('triangulate', wrong('triangulate-fan'));
+    const failed = report.checks.filter((c) => !c.passed);
+    expect(failed.every((c) => c.hidden)).toBe(true);
+    expect(failed.map((c) => c.name)).toContain('hidden: an L-shaped hexagon: same as the library');
+    expect(failed.find((c) => /L-shaped/.test(c.name))!.message).toMatch(/no triangle may fold over\.$/);
+  });
+
   it('a degree that counts each edge twice: both answers said', async () => {
     const report = await grade('vertex-degree', wrong('degree-twice'));
     expect(failures(report)[0]).toContain("your code returned 6; the library's answer is 3");

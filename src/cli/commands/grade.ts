@@ -29,24 +29,32 @@ export const gradeCommand: Command = {
     }
     if (values.json) console.log(JSON.stringify(gradescope(report), null, 2));
     else {
-      for (const check of report.checks) console.log(`${check.passed ? 'pass' : 'FAIL'}  ${check.name}${check.passed ? '' : `\n      ${check.message}`}`);
+      const marks = { passed: 'pass', partial: 'PART', failed: 'FAIL' } as const;
+      for (const check of report.checks) {
+        const credit = check.status === 'partial' ? ` (${check.score} of a point)` : '';
+        console.log(`${marks[check.status]}  ${check.name}${credit}${check.passed ? '' : `\n      ${check.message}`}`);
+      }
       const passed = report.checks.filter((c) => c.passed).length;
-      console.log(`${passed} of ${report.checks.length} checks pass`);
+      console.log(`${passed} of ${report.checks.length} checks pass; ${report.score} of ${report.maxScore} points`);
     }
     return report.passed ? 0 : 1;
   },
 };
 
-/** A Gradescope `results.json`: one test per fixture and check, a point each. */
+/**
+ * A Gradescope `results.json`: one test per fixture and check, a point each. A check that earns
+ * part of its point (a hard case refused cleanly) scores that part, e.g. 0.8; Gradescope knows
+ * only "passed" and "failed", so it is "failed", and its output says it earned part.
+ */
 export function gradescope(report: GradeReport) {
   const tests = report.checks.map((check) => ({
     name: check.name,
-    score: check.passed ? 1 : 0,
+    score: check.score,
     max_score: 1,
     status: check.passed ? 'passed' : 'failed',
-    output: check.message,
+    output: check.status === 'partial' ? `partial credit, ${check.score} of 1: ${check.message}` : check.message,
   }));
-  return { score: tests.reduce((sum, t) => sum + t.score, 0), max_score: tests.length, tests };
+  return { score: report.score, max_score: report.maxScore, tests };
 }
 
 /** The same tests as `gradescope` would list, each failed with why the solution did not load: the same `max_score` either way. */

@@ -68,6 +68,17 @@ export function compareAnswers(kind: AnswerKind, yours: unknown, reference: unkn
       if (!Array.isArray(yours) || !Array.isArray(reference)) return said;
       return yours.length === reference.length && canonical(yours as number[]) === canonical(reference as number[]) ? null : `${said} (any starting vertex is right; the order is not)`;
     }
+    case 'face': {
+      if (reference === -1 || yours === -1) return yours === reference ? null : said;
+      if (typeof yours !== 'number' || !Number.isInteger(yours) || yours < 0 || yours >= yourMesh.faceSlots || yourMesh.isFaceDeleted(yours)) {
+        return `your code returned ${show(yours)}, which is not a face of your mesh; the library's answer is f${String(reference)}`;
+      }
+      const tolerance = sameSpotTolerance(referenceMesh);
+      const corners = (mesh: HalfedgeMesh, f: number) => faceCorners(mesh, f).map((v) => mesh.position(v));
+      const [mine, theirs] = [corners(yourMesh, yours), corners(referenceMesh, reference as number)];
+      const same = mine.length === theirs.length && theirs.some((_, start) => mine.every((p, i) => distance(p, theirs[(start + i) % theirs.length]) <= tolerance));
+      return same ? null : `your code returned f${yours}, with corners at ${mine.map(formatPoint).join(' → ')}; the library's face has them at ${theirs.map(formatPoint).join(' → ')}`;
+    }
     case 'vertex': {
       if (reference === -1 || yours === -1) return yours === reference ? null : said;
       if (typeof yours !== 'number' || !Number.isInteger(yours) || yours < 0 || yours >= yourMesh.vertexSlots || yourMesh.isVertexDeleted(yours)) {
@@ -78,6 +89,112 @@ export function compareAnswers(kind: AnswerKind, yours: unknown, reference: unkn
       return distance(p, q) <= tolerance ? null : `your code returned v${yours} at ${formatPoint(p)}; the library's vertex is at ${formatPoint(q)}`;
     }
   }
+}
+
+/**
+ * Null when `yours` is a triangulation of `before` with the library's result `reference`, else the
+ * first difference in words: the same vertices (by position) and holes as the reference, every
+ * face the reference left as it was left so, and every other face a triangle whose corners follow
+ * one another around one face of `before` (a diagonal, never a new edge across two faces), turning
+ * the way that face turns (a triangle that folds over, or has no area, is not a cut of the face).
+ * With the counts equal to the reference's and every edge of `before` kept, those triangles tile
+ * each face: any diagonals pass, not only the library's.
+ */
+export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMesh, before: HalfedgeMesh): string | null {
+  const counts = (m: HalfedgeMesh) => [m.nVertices, m.nEdges, m.nFaces];
+  const [v, e, f] = counts(yours);
+  const [rv, re, rf] = counts(reference);
+  if (v !== rv || e !== re || f !== rf) {
+    return `your mesh has ${v} vertices, ${e} edges and ${f} faces; the library's has ${rv}, ${re} and ${rf}`;
+  }
+  const tolerance = sameSpotTolerance(reference);
+  // your vertex → the vertex of `before` at its place (a triangulation adds no vertex)
+  const match = new Map<number, number>();
+  const taken = new Set<number>();
+  for (const v of yours.vertices()) {
+    const b = nearestVertex(before, yours.position(v), tolerance);
+    if (b === -1 || taken.has(b)) return `your v${v} is at ${formatPoint(yours.position(v))}, where the fixture had no vertex of its own`;
+    taken.add(b);
+    match.set(v, b);
+  }
+  const mapped = (cycle: number[]) => cycle.map((v) => match.get(v) ?? -1);
+  const yourEdges = new Set<string>();
+  for (const e of yours.edges()) yourEdges.add(edgeKey(match.get(yours.heVertex[2 * e]) ?? -1, match.get(yours.heVertex[2 * e + 1]) ?? -1));
+  for (const e of before.edges()) {
+    const [a, b] = [before.heVertex[2 * e], before.heVertex[2 * e + 1]];
+    if (!yourEdges.has(edgeKey(a, b))) return `the edge between v${a} and v${b} is gone from your mesh: a triangulation only adds diagonals`;
+  }
+  // the faces the library left (those it could not cut), as they were
+  const kept = new Set(cycles(reference, false).filter(({ corners }) => corners.length > 3).map(({ corners }) => canonical(corners.map((v) => nearestVertex(before, reference.position(v), tolerance)))));
+  // for each vertex of `before`, the faces it is a corner of, with its place around each
+  const facesAt = new Map<number, { face: number; corners: number[] }[]>();
+  for (const { id, corners } of cycles(before, false)) {
+    for (const c of corners) facesAt.set(c, [...(facesAt.get(c) ?? []), { face: id, corners }]);
+  }
+  // the fixture's own triangles, untouched (a triangle with no area, too, is no face to cut)
+  const triangles = new Set(cycles(before, false).filter(({ corners }) => corners.length === 3).map(({ corners }) => canonical(corners)));
+  for (const { id, corners } of cycles(yours, false)) {
+    const cycle = mapped(corners);
+    if (kept.has(canonical(cycle)) || triangles.has(canonical(cycle))) continue;
+    if (cycle.length !== 3) return `your f${id} has ${cycle.length} sides: every face the library cut must be cut into triangles`;
+    const within = (facesAt.get(cycle[0]) ?? []).find(({ corners }) => inOrderAround(corners, cycle));
+    if (!within) return `your f${id} (${corners.map((v) => `v${v}`).join(' → ')}) is not a triangle cut from one face of the fixture, in its order`;
+    const normal = faceNormalOf(before, within.corners);
+    const [p, q, r] = cycle.map((v) => before.position(v));
+    const turn = crossOf([q[0] - p[0], q[1] - p[1], q[2] - p[2]], [r[0] - p[0], r[1] - p[1], r[2] - p[2]]);
+    const along = turn[0] * normal[0] + turn[1] * normal[1] + turn[2] * normal[2];
+    const scale = Math.hypot(...turn) * Math.hypot(...normal);
+    if (!(along > 1e-9 * scale) || scale === 0) {
+      return `your f${id} (${corners.map((v) => `v${v}`).join(' → ')}) ${scale === 0 ? 'has no area' : 'folds over: it turns against its face'}: cut f${within.face} of the fixture along other diagonals`;
+    }
+  }
+  const referenceHoles = new Set(cycles(reference, true).map(({ corners }) => canonical(corners.map((v) => nearestVertex(before, reference.position(v), tolerance)))));
+  const yourHoles = cycles(yours, true);
+  if (yourHoles.length !== referenceHoles.size) return `your mesh has ${yourHoles.length} boundary loops; the library's has ${referenceHoles.size}`;
+  for (const { id, corners } of yourHoles) {
+    if (!referenceHoles.has(canonical(mapped(corners)))) {
+      return `the boundary loop through your h${id} (${corners.map((v) => `v${v}`).join(' → ')}) is not a boundary loop of the library's result`;
+    }
+  }
+  return null;
+}
+
+/** The corners of face `f`, from its halfedge (bounded by the mesh's size). */
+function faceCorners(mesh: HalfedgeMesh, f: number): number[] {
+  const corners: number[] = [];
+  const start = mesh.fHalfedge[f];
+  let h = start;
+  do {
+    corners.push(mesh.heVertex[h]);
+    h = mesh.heNext[h];
+  } while (h !== start && h >= 0 && corners.length <= mesh.halfedgeSlots);
+  return corners;
+}
+
+/** True when the vertices of `part` come in `cycle` in the same cyclic order (not necessarily next to each other). */
+function inOrderAround(cycle: number[], part: number[]): boolean {
+  const at = part.map((v) => cycle.indexOf(v));
+  if (at.some((i) => i < 0)) return false;
+  let turns = 0;
+  for (let i = 0; i < at.length; i++) if (at[(i + 1) % at.length] < at[i]) turns++;
+  return turns === 1;
+}
+
+/** Newell's vector area of a polygon given by its corners. */
+function faceNormalOf(mesh: HalfedgeMesh, corners: number[]): number[] {
+  const n = [0, 0, 0];
+  for (let i = 0; i < corners.length; i++) {
+    const p = mesh.position(corners[i]);
+    const q = mesh.position(corners[(i + 1) % corners.length]);
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
+function crossOf(a: number[], b: number[]): number[] {
+  return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
 }
 
 function show(value: unknown): string {

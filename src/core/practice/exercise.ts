@@ -7,6 +7,7 @@ import { buildMesh } from '../build.js';
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { readMesh } from '../io/read.js';
+import { encodeText } from '../io/text.js';
 import * as shapes from '../shapes.js';
 import { mergeSoups, type PolygonSoup } from '../soup.js';
 
@@ -15,9 +16,27 @@ import { mergeSoups, type PolygonSoup } from '../soup.js';
  * - `exact`: the same value (numbers, booleans, arrays element by element);
  * - `cycle`: the same ids in the same cyclic order, starting anywhere;
  * - `vertex`: a vertex id, compared by where it is (the ids of new vertices may differ), or -1;
+ * - `face`: a face id, compared by where its corners are, in order (the ids of new faces may differ), or -1;
  * - `none`: the value is not looked at (an operation graded by the mesh it leaves).
  */
-export type AnswerKind = 'exact' | 'cycle' | 'vertex' | 'none';
+export type AnswerKind = 'exact' | 'cycle' | 'vertex' | 'face' | 'none';
+
+export const answerKinds: readonly AnswerKind[] = ['exact', 'cycle', 'vertex', 'face', 'none'];
+
+/**
+ * How the mesh an edit leaves is compared with the library's:
+ * - `mesh`: the same mesh up to ids (vertices by position, faces and holes by their corners);
+ * - `triangulation`: the same vertices and holes, every face the library cut cut into triangles
+ *   along any diagonals that do not fold over (so any correct triangulation passes, not only the
+ *   library's ear clipping), and every face it left as it was left so.
+ */
+export type MeshComparison = 'mesh' | 'triangulation';
+
+/**
+ * What a solution is called with: an element id (`7`), a list of ids (two edges to weld, `[3, 8]`),
+ * or named numbers (`{ face: 3, offset: 0.5, inset: 0.25 }`).
+ */
+export type ExerciseInput = number | readonly number[] | { readonly [name: string]: number };
 
 /** A query answers from the mesh and must leave it as it was; an edit changes it. */
 export type ExerciseKind = 'query' | 'edit';
@@ -35,18 +54,38 @@ export interface Fixture {
   shapes?: ShapeCall[];
   /** A mesh file (PLY, OFF, OBJ, STL), relative to the exercise file. */
   file?: string;
+  /** A small mesh written out in OFF, for a shape no generator makes (a face with no area, a pentagon). */
+  off?: string;
   /** What the solution is called with (`undefined` for none). */
-  input?: number;
+  input?: ExerciseInput;
+  /**
+   * A hard case graded without showing it: the student sees whether it passed and its `rule`, never
+   * its mesh, its input or its writes. Where the library does the edit and the solution refuses it
+   * cleanly (see `Exercise.refusal`), its checks earn part of their point (`PARTIAL_CREDIT`).
+   */
+  hidden?: boolean;
+  /** For a hidden fixture: the rule it checks, in one sentence ("a boundary vertex is bevelled too"). */
+  rule?: string;
 }
 
 /** The library's operation or query, applied to `mesh` (changed in place for an edit). */
-export type ReferenceFunction = (mesh: HalfedgeMesh, input: number | undefined) => unknown;
+export type ReferenceFunction = (mesh: HalfedgeMesh, input: ExerciseInput | undefined) => unknown;
 
 export interface Exercise {
   id: string;
+  /** Older ids that still find this exercise (`poke-face` for `inset-vertex`). */
+  aliases?: string[];
   title: string;
   kind: ExerciseKind;
   answer: AnswerKind;
+  /**
+   * What an edit returns when it does not apply (-1, or `false` for one that answers true or
+   * false). A solution that returns it and leaves the mesh as it was has *refused cleanly*; on a
+   * hidden fixture the library handles, that earns part of the point (see `Fixture.hidden`).
+   */
+  refusal?: -1 | false;
+  /** How the mesh an edit leaves is compared (default `mesh`). */
+  compare?: MeshComparison;
   /** The task, as paragraphs of plain text. */
   task: string[];
   hints: string[];
@@ -65,6 +104,8 @@ export function fixtureMesh(fixture: Fixture, files: ReadonlyMap<string, Uint8Ar
     const bytes = files.get(fixture.file);
     if (!bytes) throw new InvalidInputError(`fixture "${fixture.name}": the file ${fixture.file} was not given`);
     soup = readMesh(bytes, { fileName: fixture.file }).soup;
+  } else if (fixture.off !== undefined) {
+    soup = readMesh(encodeText(fixture.off), { fileName: 'fixture.off' }).soup;
   } else {
     soup = sideBySide((fixture.shapes ?? []).map(shapeSoup));
   }
@@ -73,6 +114,27 @@ export function fixtureMesh(fixture: Fixture, files: ReadonlyMap<string, Uint8Ar
   // a fixture is re-checked after every write a solution makes: it has to stay small
   if (faces > MAX_FIXTURE_FACES) throw new InvalidInputError(`fixture "${fixture.name}" has ${faces} faces; a fixture has at most ${MAX_FIXTURE_FACES}`);
   return buildMesh(soup).mesh;
+}
+
+/** A fixture's input as the panel and the history label say it: `7`, `[3, 8]`, `{ face: 3, offset: 0.5 }`. */
+export function describeInput(input: ExerciseInput | undefined): string {
+  if (input === undefined) return 'no input';
+  if (typeof input === 'number') return String(input);
+  if (Array.isArray(input)) return `[${input.join(', ')}]`;
+  return `{ ${Object.entries(input).map(([name, value]) => `${name}: ${value}`).join(', ')} }`;
+}
+
+/** The input as a solution gets it: a copy it cannot change (the reference gets its own). */
+export function frozenInput(input: ExerciseInput | undefined): ExerciseInput | undefined {
+  if (input === undefined || typeof input === 'number') return input;
+  return Object.freeze(Array.isArray(input) ? [...input] : { ...input });
+}
+
+function isInput(value: unknown): value is ExerciseInput {
+  const id = (x: unknown) => typeof x === 'number' && Number.isInteger(x);
+  if (id(value)) return true;
+  if (Array.isArray(value)) return value.length > 0 && value.every(id);
+  return !!value && typeof value === 'object' && Object.values(value).length > 0 && Object.values(value).every((x) => typeof x === 'number' && Number.isFinite(x));
 }
 
 function shapeSoup([name, ...args]: ShapeCall): PolygonSoup {
@@ -119,28 +181,41 @@ export function parseExercise(doc: unknown, referenceSource: string): Exercise {
   const kind = text('kind');
   if (kind !== 'query' && kind !== 'edit') bad('kind', 'must be "query" or "edit"');
   const answer = text('answer');
-  if (!['exact', 'cycle', 'vertex', 'none'].includes(answer)) bad('answer', 'must be "exact", "cycle", "vertex" or "none"');
+  if (!(answerKinds as readonly string[]).includes(answer)) bad('answer', `must be ${answerKinds.map((a) => `"${a}"`).join(', ')}`);
+  if (d.refusal !== undefined && d.refusal !== -1 && d.refusal !== false) bad('refusal', 'must be -1 or false: what the solution returns when the edit does not apply');
+  if (d.compare !== undefined && d.compare !== 'mesh' && d.compare !== 'triangulation') bad('compare', 'must be "mesh" or "triangulation"');
   if (!Array.isArray(d.fixtures) || d.fixtures.length === 0) bad('fixtures', 'must be a non-empty list');
   const fixtures = (d.fixtures as unknown[]).map((f, i): Fixture => {
     const where = `fixtures[${i}]`;
     if (!f || typeof f !== 'object') return bad(where, 'must be an object');
-    const { name, shapes, file, input } = f as Record<string, unknown>;
+    const { name, shapes, file, off, input, hidden, rule } = f as Record<string, unknown>;
     if (typeof name !== 'string' || !name) bad(`${where}.name`, 'must be a non-empty string');
-    if (input !== undefined && (typeof input !== 'number' || !Number.isInteger(input))) bad(`${where}.input`, 'must be an integer id');
+    if (input !== undefined && !isInput(input)) bad(`${where}.input`, 'must be an integer id, a list of ids ([3, 8]) or named numbers ({ "face": 3, "offset": 0.5 })');
+    if (hidden !== undefined && typeof hidden !== 'boolean') bad(`${where}.hidden`, 'must be true or false');
+    if (hidden === true && (typeof rule !== 'string' || !rule)) bad(`${where}.rule`, 'must say, in a sentence, the rule a hidden fixture checks (the student sees it, not the mesh)');
+    if (rule !== undefined && typeof rule !== 'string') bad(`${where}.rule`, 'must be a sentence');
+    const common = { name: name as string, input: input as ExerciseInput | undefined, ...(hidden ? { hidden: true, rule: rule as string } : rule ? { rule: rule as string } : {}) };
     if (file !== undefined) {
       if (typeof file !== 'string') bad(`${where}.file`, 'must be a file name');
-      return { name: name as string, file: file as string, input: input as number | undefined };
+      return { ...common, file: file as string };
+    }
+    if (off !== undefined) {
+      if (typeof off !== 'string' || !off) bad(`${where}.off`, 'must be the text of a mesh in OFF');
+      return { ...common, off: off as string };
     }
     const known = (name: unknown) => (shapeNames as readonly unknown[]).includes(name);
     const valid = Array.isArray(shapes) && shapes.length > 0 && shapes.every((s) => Array.isArray(s) && known(s[0]) && s.slice(1).every((a: unknown) => typeof a === 'number'));
-    if (!valid) bad(`${where}.shapes`, `must be a list of shapes such as [["disk", 2]] (known: ${shapeNames.join(', ')}), or give "file"`);
-    return { name: name as string, shapes: shapes as ShapeCall[], input: input as number | undefined };
+    if (!valid) bad(`${where}.shapes`, `must be a list of shapes such as [["disk", 2]] (known: ${shapeNames.join(', ')}), or give "file" or "off"`);
+    return { ...common, shapes: shapes as ShapeCall[] };
   });
+  if (fixtures.every((f) => f.hidden)) bad('fixtures', 'must have one that is not hidden, for the student to see what the exercise is about');
   return {
     id: text('id'),
     title: text('title'),
     kind: kind as ExerciseKind,
     answer: answer as AnswerKind,
+    ...(d.refusal !== undefined ? { refusal: d.refusal as -1 | false } : {}),
+    ...(d.compare !== undefined ? { compare: d.compare as MeshComparison } : {}),
     task: texts('task'),
     hints: d.hints === undefined ? [] : texts('hints'),
     starter: text('starter'),

@@ -4,14 +4,14 @@
  * hand back one `RunOutput` per fixture, and everything else happens here, the same everywhere.
  */
 import type { HalfedgeMesh } from '../mesh.js';
-import { type Exercise, fixtureMesh } from './exercise.js';
+import { type Exercise, type ExerciseInput, fixtureMesh, frozenInput } from './exercise.js';
 import { type Check, type FixtureResult, gradeFixture } from './grade.js';
 import type { RunOutput } from './run.js';
 import { replayWrites } from './writes.js';
 
 export interface FixtureRun {
   mesh: HalfedgeMesh;
-  input: number | undefined;
+  input: ExerciseInput | undefined;
 }
 
 /**
@@ -22,23 +22,36 @@ export type SolutionRunner = (source: string, runs: FixtureRun[]) => Promise<Run
 
 export interface GradeReport {
   exercise: string;
+  /** Every check passed in full. */
   passed: boolean;
+  /** The points earned: a point per check passed, `PARTIAL_CREDIT` per check partly earned. */
+  score: number;
+  /** A point per check, whatever the solution did (`checkNames(exercise).length`). */
+  maxScore: number;
   checks: Check[];
-  fixtures: (FixtureResult & { before: HalfedgeMesh; input: number | undefined })[];
+  /** Per fixture; a hidden one's `input` is left out, as are its writes and reads (see `FixtureResult`). */
+  fixtures: (FixtureResult & { before: HalfedgeMesh; input: ExerciseInput | undefined })[];
 }
 
 export async function gradeSolution(exercise: Exercise, source: string, run: SolutionRunner, files?: ReadonlyMap<string, Uint8Array>): Promise<GradeReport> {
   const meshes = exercise.fixtures.map((fixture) => fixtureMesh(fixture, files));
-  const runs = meshes.map((mesh, i) => ({ mesh, input: exercise.fixtures[i].input }));
-  const outputs = await run(source, runs);
-  const references = await referenceResults(exercise, runs, run);
-  const fixtures = exercise.fixtures.map((fixture, i) => ({
-    ...gradeFixture(exercise, fixture, meshes[i], outputs[i], references[i]),
+  // each run gets its own copy of the input, so that code which changes it changes nothing else
+  const runsOf = () => meshes.map((mesh, i) => ({ mesh, input: frozenInput(exercise.fixtures[i].input) }));
+  const outputs = await run(source, runsOf());
+  const references = await referenceResults(exercise, runsOf(), run);
+  // the fixtures shown first: a hard case refused cleanly earns part of its point only beside them all passing
+  const graded = (i: number, partialCredit = true) => ({
+    ...gradeFixture(exercise, exercise.fixtures[i], meshes[i], outputs[i], references[i], partialCredit),
     before: meshes[i],
-    input: fixture.input,
-  }));
+    input: exercise.fixtures[i].hidden ? undefined : exercise.fixtures[i].input,
+  });
+  const shown = new Map(exercise.fixtures.flatMap((fixture, i) => (fixture.hidden ? [] : [[i, graded(i)] as const])));
+  const shownPass = [...shown.values()].every((result) => result.checks.every((c) => c.passed));
+  const fixtures = exercise.fixtures.map((_, i) => shown.get(i) ?? graded(i, shownPass));
   const checks = fixtures.flatMap((result) => result.checks);
-  return { exercise: exercise.id, passed: checks.every((c) => c.passed), checks, fixtures };
+  // summed in hundredths, so that five checks of 0.8 make 4, not 4.000000000000001
+  const score = Math.round(checks.reduce((sum, c) => sum + c.score, 0) * 100) / 100;
+  return { exercise: exercise.id, passed: checks.every((c) => c.passed), score, maxScore: checks.length, checks, fixtures };
 }
 
 /** What the reference answers and leaves on each fixture (the library's function, or a reference solution run like any other). */

@@ -9,19 +9,40 @@
  *   next-prev:   ok   ok   BAD  ok   ok   ok      fixed again: a correct state in between, not blamed
  *   vertex-h:    ok   ok   ok   BAD  BAD  BAD     still broken at the end: first broken = w3
  * ```
+ *
+ * A hidden fixture is graded the same way, but what its checks say names nothing of its mesh (only
+ * its rule), and its writes and reads are left out of the result. On a hidden fixture the library
+ * handles, a solution that refuses cleanly (returns the exercise's `refusal` and changes nothing)
+ * earns `PARTIAL_CREDIT` of each check, once every fixture that is shown passes.
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import { validate, type Violation } from '../validate.js';
-import { compareAnswers, compareMeshes } from './compare.js';
+import { compareAnswers, compareMeshes, compareTriangulation } from './compare.js';
 import type { Exercise, Fixture } from './exercise.js';
 import type { RunOutput } from './run.js';
 import { applyWrite, describeWrite, type PracticeWrite, replayWrites } from './writes.js';
 
+/**
+ * `partial`: a hidden fixture (a hard case) the library handles, which the solution refused
+ * cleanly (returned the exercise's `refusal` and left the mesh as it was): worth `PARTIAL_CREDIT`.
+ */
+export type CheckStatus = 'passed' | 'partial' | 'failed';
+
+/** What a check refused cleanly on a hard case the library handles is worth, of its point. */
+export const PARTIAL_CREDIT = 0.8;
+
 export interface Check {
   /** "fixture name: what is checked". */
   name: string;
+  /** True when the check passed in full (`status` is `passed`). */
   passed: boolean;
+  status: CheckStatus;
+  /** The part of its point the check earns: 1, `PARTIAL_CREDIT` or 0. */
+  score: number;
+  /** Why it failed, in words ('passed' when it passed); for a hidden fixture, never its ids, only its rule. */
   message: string;
+  /** The check is on a hidden fixture: its mesh, input and writes are not shown. */
+  hidden?: boolean;
 }
 
 /** The write after which an invariant that is still broken at the end first broke. */
@@ -36,6 +57,8 @@ export interface FirstBroken {
 
 export interface FixtureResult {
   fixture: string;
+  /** A hidden fixture: `writes`, `visits` and `firstBroken` are left empty, so nothing can show them. */
+  hidden: boolean;
   checks: Check[];
   writes: PracticeWrite[];
   /** Halfedges the code read a pointer of, in order (the first `MAX_VISITS` of `reads`). */
@@ -64,7 +87,9 @@ const MAX_TRACE_WORK = 20_000_000;
 
 /**
  * The checks of one fixture. `before` is the fixture's mesh (not changed); `reference` is what the
- * reference answered and left.
+ * reference answered and left. `partialCredit`: whether a hidden fixture the library handles and
+ * the solution refused cleanly earns `PARTIAL_CREDIT` (it does once the solution passes every
+ * fixture that is not hidden: refusing is worth something beside a working edit, not instead of one).
  */
 export function gradeFixture(
   exercise: Exercise,
@@ -72,12 +97,18 @@ export function gradeFixture(
   before: HalfedgeMesh,
   output: RunOutput,
   reference: { value: unknown; mesh: HalfedgeMesh },
+  partialCredit = true,
 ): FixtureResult {
   const after = replayWrites(before.clone(), output.writes);
   const checks: Check[] = [];
-  const check = (what: (typeof FIXTURE_CHECKS)[keyof typeof FIXTURE_CHECKS][number], message: string | null) => checks.push({ name: `${fixture.name}: ${what}`, passed: message === null, message: message ?? 'passed' });
+  const check = (what: (typeof FIXTURE_CHECKS)[keyof typeof FIXTURE_CHECKS][number], message: string | null) =>
+    checks.push({ name: `${fixture.name}: ${what}`, passed: message === null, status: message === null ? 'passed' : 'failed', score: message === null ? 1 : 0, message: message ?? 'passed' });
   const failure = output.error ? describeError(output) : null;
   let firstBroken: FirstBroken | null = null;
+  const refusal = exercise.refusal;
+  // a clean refusal: the refusal returned and the mesh left as it was (up to ids)
+  const refusedCleanly = exercise.kind === 'edit' && refusal !== undefined && !output.error && output.value === refusal && compareMeshes(after, before) === null;
+  const libraryRefuses = refusal !== undefined && reference.value === refusal;
 
   if (exercise.kind === 'query') {
     const write = output.writes[0];
@@ -87,16 +118,50 @@ export function gradeFixture(
         (write ? `a query must leave the mesh as it is, but ${at(write.line)}wrote ${describeWrite(write)}` : null) ??
         compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh),
     );
+  } else if (fixture.hidden && refusedCleanly && !libraryRefuses) {
+    // a hard case refused cleanly that the library handles: part of the point, on both checks
+    const refused = `your code refused this case cleanly (it returned ${String(refusal)} and left the mesh as it was), but the library does the edit`;
+    for (const what of FIXTURE_CHECKS.edit) {
+      const name = `${fixture.name}: ${what}`;
+      if (partialCredit) checks.push({ name, passed: false, status: 'partial', score: PARTIAL_CREDIT, message: `${refused}: ${PARTIAL_CREDIT} of the point` });
+      else checks.push({ name, passed: false, status: 'failed', score: 0, message: `${refused} (a clean refusal earns ${PARTIAL_CREDIT} of the point once every fixture that is not hidden passes)` });
+    }
   } else {
     const problems = validate(after, { limit: 50 });
     if (problems.length > 0) firstBroken = findFirstBroken(before, output.writes, problems);
     check('valid mesh', problems.length === 0 ? null : describeBroken(problems, firstBroken, output));
+    const refusedNeedlessly = refusedCleanly && !libraryRefuses ? `your code returned ${String(refusal)} and changed nothing, but this case needs no refusing: the library does the edit` : null;
     check(
       'same as the library',
-      failure ?? compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ?? compareMeshes(after, reference.mesh),
+      failure ??
+        refusedNeedlessly ??
+        compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ??
+        (exercise.compare === 'triangulation' ? compareTriangulation(after, reference.mesh, before) : compareMeshes(after, reference.mesh)),
     );
   }
-  return { fixture: fixture.name, checks, writes: output.writes, visits: output.visits, reads: output.reads, firstBroken, after };
+  if (fixture.hidden) {
+    for (const c of checks) {
+      c.hidden = true;
+      // a clean refusal's message names no element; any other is said again without ids
+      const why = refusedCleanly && !libraryRefuses ? c.message : hiddenFailure(c, output, refusal, libraryRefuses);
+      if (c.status !== 'passed') c.message = `${why}. A hidden case: ${fixture.rule ?? 'its mesh is not shown'}`;
+    }
+    return { fixture: fixture.name, hidden: true, checks, writes: [], visits: [], reads: 0, firstBroken: null, after };
+  }
+  return { fixture: fixture.name, hidden: false, checks, writes: output.writes, visits: output.visits, reads: output.reads, firstBroken, after };
+}
+
+/** What went wrong on a hidden fixture, without an id of its mesh (nor a value that would give one away). */
+function hiddenFailure(check: Check, output: RunOutput, refusal: -1 | false | undefined, libraryRefuses: boolean): string {
+  const error = output.error;
+  if (error) {
+    const where = error.line === null ? '' : ` at line ${error.line}`;
+    return error.name === 'BudgetError' ? `your code was stopped${where}: it went past its budget of time, pointer reads, new elements or memory` : error.name === 'NotRun' ? error.message : `your code threw ${error.name}${where}`;
+  }
+  if (check.name.endsWith(': valid mesh')) return 'the mesh your code left breaks an invariant';
+  if (check.name.endsWith(': answer')) return output.writes.length > 0 ? 'a query must leave the mesh as it is, but your code wrote to it' : "your answer is not the library's";
+  if (libraryRefuses) return `the library refuses this case, but your code did not return ${String(refusal)} and leave the mesh as it was`;
+  return "your result is not the library's";
 }
 
 function at(line: number | null): string {

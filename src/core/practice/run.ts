@@ -4,10 +4,11 @@
  * halfedges read, the error), which the grader checks outside the sandbox.
  */
 import type { HalfedgeMesh } from '../mesh.js';
+import { type ExerciseInput, frozenInput } from './exercise.js';
 import { DEFAULT_BUDGET, type PracticeBudget, type PracticeMesh, practiceMesh, type PracticeTrace } from './mesh-api.js';
 import { solutionLine } from './source.js';
 
-export type Solution = (mesh: PracticeMesh, input: number | undefined) => unknown;
+export type Solution = (mesh: PracticeMesh, input: ExerciseInput | undefined) => unknown;
 
 /** An error the solution's run ended with, at its line when the stack names one. */
 export interface RunError {
@@ -27,11 +28,11 @@ export interface RunOutput extends PracticeTrace {
  * Runs `solution` on `mesh` (changed in place by its writes). `lineOffset` is the number of lines
  * the engine puts before the compiled body (see `solutionLine`).
  */
-export function runSolution(solution: Solution, mesh: HalfedgeMesh, input: number | undefined, lineOffset: number, budget: PracticeBudget = DEFAULT_BUDGET): RunOutput {
+export function runSolution(solution: Solution, mesh: HalfedgeMesh, input: ExerciseInput | undefined, lineOffset: number, budget: PracticeBudget = DEFAULT_BUDGET): RunOutput {
   const lineOf = () => solutionLine(new Error().stack, lineOffset);
   const { api, trace } = practiceMesh(mesh, lineOf, budget);
   try {
-    const value = plain(solution(Object.freeze(api), input));
+    const value = plain(solution(Object.freeze(api), frozenInput(input)));
     return { ...trace, value, error: null };
   } catch (error) {
     return { ...trace, value: undefined, error: runError(error, lineOffset) };

@@ -6,9 +6,9 @@
  */
 import { type PointerDiff, type SerializedMesh, serializeMesh } from '../../core/index.js';
 // module by module: the index would bring the solution parser, which only the sandbox needs
-import { type Exercise, fixtureMesh } from '../../core/practice/exercise.js';
+import { describeInput, type Exercise, type ExerciseInput, fixtureMesh } from '../../core/practice/exercise.js';
 import { exercises } from '../../core/practice/exercises.js';
-import type { FirstBroken } from '../../core/practice/grade.js';
+import { type CheckStatus, type FirstBroken, PARTIAL_CREDIT } from '../../core/practice/grade.js';
 import { type GradeReport, gradeSolution } from '../../core/practice/grade-solution.js';
 import { whyNotDrawable } from '../../core/practice/drawable.js';
 import { MAX_VISITS, PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
@@ -39,11 +39,15 @@ export interface PracticeActions {
 /** What `run()` reports, as `window.halfedgeLab.practice.run()` gives it. */
 export interface PracticeRunResult {
   passed: boolean;
-  checks: { name: string; passed: boolean; message: string }[];
-  /** The writes on the fixture shown (the first that failed, else the first). */
+  /** The points earned (a partial check earns part of its point) and the points there are. */
+  score: number;
+  maxScore: number;
+  checks: { name: string; passed: boolean; status: CheckStatus; score: number; message: string; hidden: boolean }[];
+  /** The writes on the fixture shown (the first shown fixture that failed, else the first shown). */
   writes: PracticeWrite[];
   firstBroken: FirstBroken | null;
-  fixtures: { name: string; writes: PracticeWrite[]; firstBroken: FirstBroken | null }[];
+  /** Every fixture; a hidden one with no writes and no first broken write (they are not shown). */
+  fixtures: { name: string; hidden: boolean; writes: PracticeWrite[]; firstBroken: FirstBroken | null }[];
   /** Why the code could not run at all (a syntax error, no default export), with its line. */
   error: { message: string; line: number | null } | null;
 }
@@ -52,6 +56,8 @@ export interface PracticeRunResult {
 const WRITES_LISTED = 400;
 /** How fast Play walks a query's reads: a face loop of six halfedges plays in about two seconds. */
 const READS_PER_SECOND = 4;
+/** What a hard case refused cleanly earns, said in the summary. */
+const PARTIAL_TEXT = `${PARTIAL_CREDIT * 100} % of its points`;
 
 const storageKey = (id: string) => `halfedge-lab.practice.${id}`;
 
@@ -133,15 +139,16 @@ export class PracticePanel {
   }
 
   load(id: string): void {
-    const exercise = this.exercises.find((e) => e.id === id);
+    const exercise = this.exercises.find((e) => e.id === id) ?? this.exercises.find((e) => e.aliases?.includes(id));
     if (!exercise) throw new Error(`there is no exercise '${id}' (there are ${this.exercises.map((e) => e.id).join(', ')})`);
     this.exercise = exercise;
+    id = exercise.id;
     this.report = null;
     this.shown = null;
     this.stopReads();
     this.read = null;
     this.hintsShown = 0;
-    this.code = saved(id)?.code ?? exercise.starter;
+    this.code = savedFor(exercise)?.code ?? exercise.starter;
     this.editor?.setText(this.code);
     this.drawList();
     if (this.editor) void this.showFirstFixture();
@@ -164,16 +171,17 @@ export class PracticePanel {
     return this.editorLoading;
   }
 
-  /** The mesh the exercise is about, before the student's code has run. */
+  /** The mesh the exercise is about, before the student's code has run (its first fixture that is not hidden). */
   private async showFirstFixture(): Promise<void> {
-    const fixture = this.exercise.fixtures[0];
+    const fixture = this.exercise.fixtures.find((f) => !f.hidden) ?? this.exercise.fixtures[0];
+    if (fixture.hidden) return;
     this.framed = this.exercise;
     await this.actions.showState(serializeMesh(fixtureMesh(fixture, fixtureFiles)), this.fixtureLabel(fixture.name, fixture.input), null, true, null);
   }
 
   /** `practice: Flip an edge, an edge inside a disk, input 10`: the history entry and the status line. */
-  private fixtureLabel(name: string, input: number | undefined): string {
-    return `practice: ${this.exercise.title}, ${name}${input === undefined ? '' : `, input ${input}`}`;
+  private fixtureLabel(name: string, input: ExerciseInput | undefined): string {
+    return `practice: ${this.exercise.title}, ${name}${input === undefined ? '' : `, input ${describeInput(input)}`}`;
   }
 
   setCode(text: string): void {
@@ -202,11 +210,14 @@ export class PracticePanel {
       const report = await gradeSolution(this.exercise, this.code, browserRunner, fixtureFiles);
       this.report = report;
       const passedCount = report.checks.filter((c) => c.passed).length;
-      this.summary.textContent = report.passed ? `All ${report.checks.length} checks pass.` : `${passedCount} of ${report.checks.length} checks pass.`;
+      const partial = report.checks.some((c) => c.status === 'partial') ? ` (${report.score} of ${report.maxScore} points: a hard case refused earns ${PARTIAL_TEXT})` : '';
+      this.summary.textContent = report.passed ? `All ${report.checks.length} checks pass.` : `${passedCount} of ${report.checks.length} checks pass${partial}.`;
       store(this.exercise.id, { code: this.code, passed: report.passed || (saved(this.exercise.id)?.passed ?? false) });
       this.drawList();
       this.drawChecks(report);
-      const shown = Math.max(0, report.fixtures.findIndex((f) => f.checks.some((c) => !c.passed)));
+      // the fixture shown: the first that failed, else the first, of those that are not hidden
+      const visible = report.fixtures.map((f, i) => i).filter((i) => !report.fixtures[i].hidden);
+      const shown = visible.find((i) => report.fixtures[i].checks.some((c) => !c.passed)) ?? visible[0] ?? 0;
       const fixture = report.fixtures[shown];
       this.drawBroken(fixture.firstBroken, shown);
       this.drawWrites(shown);
@@ -228,7 +239,7 @@ export class PracticePanel {
       replace(this.broken, lineButton(error.line, (line) => this.goToLine(line)));
       replace(this.writes);
       replace(this.reads);
-      return { passed: false, checks: [], writes: [], firstBroken: null, fixtures: [], error: { message: error.message, line: error.line } };
+      return { passed: false, score: 0, maxScore: 0, checks: [], writes: [], firstBroken: null, fixtures: [], error: { message: error.message, line: error.line } };
     } finally {
       this.runButton.disabled = false;
     }
@@ -237,7 +248,7 @@ export class PracticePanel {
   /** Shows fixture `fixture` after its first `count` writes in the view. */
   async show(fixture: number, count: number): Promise<void> {
     const result = this.report?.fixtures[fixture];
-    if (!result) return;
+    if (!result || result.hidden) return;
     const write = Math.max(0, Math.min(count, result.writes.length));
     // replay up to the state asked for, remembering the last one that can be drawn
     const mesh = result.before.clone();
@@ -267,7 +278,7 @@ export class PracticePanel {
   /** For a query: shows fixture `fixture` with the halfedges its run read up to read `step` (zero-based) marked. */
   async showRead(fixture: number, step: number): Promise<void> {
     const result = this.report?.fixtures[fixture];
-    if (!result) return;
+    if (!result || result.hidden) return;
     const at = Math.max(0, Math.min(step, result.visits.length - 1));
     const marks = result.visits.length === 0 ? null : readMarks(result.before, result.visits, at);
     const sameFixture = this.read?.fixture === fixture;
@@ -350,19 +361,34 @@ export class PracticePanel {
   private drawList(): void {
     replace(
       this.select,
-      ...this.exercises.map((e, i) => el('option', { value: e.id, selected: e.id === this.exercise.id }, `${i + 1}. ${e.title}${saved(e.id)?.passed ? ' ✓' : ''}`)),
+      ...this.exercises.map((e, i) => el('option', { value: e.id, selected: e.id === this.exercise.id }, `${i + 1}. ${e.title}${savedFor(e)?.passed ? ' ✓' : ''}`)),
     );
     this.select.value = this.exercise.id;
   }
 
-  /** The failed checks, each with its reason; the passed ones folded under one line. */
+  /**
+   * The failed checks, each with its reason, then those earning part of their point; the passed
+   * ones folded under one line. A hidden fixture's check says so; its reason gives its rule only.
+   */
   private drawChecks(report: GradeReport): void {
+    const marks: Record<CheckStatus, string> = { passed: '✓', partial: '◐', failed: '✗' };
+    const classes: Record<CheckStatus, string> = { passed: 'pass', partial: 'partial', failed: 'fail' };
     const item = (check: GradeReport['checks'][number]) =>
-      el('li', { class: check.passed ? 'pass' : 'fail' }, el('span', { class: 'mark', 'aria-hidden': 'true' }, check.passed ? '✓' : '✗'), ' ', el('strong', {}, check.name), check.passed ? '' : el('span', { class: 'why' }, check.message));
+      el(
+        'li',
+        { class: classes[check.status] },
+        el('span', { class: 'mark', 'aria-hidden': 'true' }, marks[check.status]),
+        ' ',
+        el('strong', {}, check.name),
+        check.hidden ? el('span', { class: 'note' }, ' (hidden: its mesh is not shown)') : '',
+        check.status === 'partial' ? el('span', { class: 'note' }, ` ${check.score} of a point`) : '',
+        check.passed ? '' : el('span', { class: 'why' }, check.message),
+      );
     const passed = report.checks.filter((c) => c.passed);
     replace(
       this.checks,
-      ...report.checks.filter((c) => !c.passed).map(item),
+      ...report.checks.filter((c) => c.status === 'failed').map(item),
+      ...report.checks.filter((c) => c.status === 'partial').map(item),
       passed.length === 0 ? null : el('li', {}, el('details', { open: passed.length === report.checks.length }, el('summary', {}, `${passed.length} passed`), el('ul', { class: 'practice-checks' }, ...passed.map(item)))),
     );
   }
@@ -378,7 +404,7 @@ export class PracticePanel {
 
   private drawWrites(fixture: number): void {
     const result = this.report?.fixtures[fixture];
-    if (!result || this.exercise.kind === 'query') return replace(this.writes);
+    if (!result || result.hidden || this.exercise.kind === 'query') return replace(this.writes);
     const shown = this.shown?.fixture === fixture ? this.shown : null;
     const at = shown ? shown.write : -1;
     const step = (delta: number) => void this.show(fixture, (at < 0 ? 0 : at) + delta);
@@ -415,7 +441,7 @@ export class PracticePanel {
   /** A query's reads on one fixture: play them, or step, in the view. */
   private drawReads(fixture: number): void {
     const result = this.report?.fixtures[fixture];
-    if (!result || this.exercise.kind !== 'query') return replace(this.reads);
+    if (!result || result.hidden || this.exercise.kind !== 'query') return replace(this.reads);
     const total = result.visits.length;
     const at = this.read?.fixture === fixture ? this.read.step : 0;
     const playing = this.readTimer !== null;
@@ -437,10 +463,10 @@ export class PracticePanel {
     );
   }
 
-  /** Which fixture's writes or reads are listed. */
+  /** Which fixture's writes or reads are listed (a hidden one is not offered). */
   private fixturePicker(what: 'writes' | 'reads', fixture: number, pick: (fixture: number) => void): HTMLElement {
     const select = el('select', { 'aria-label': `Fixture whose ${what} are shown`, onchange: () => pick(Number(select.value)) },
-      ...this.report!.fixtures.map((f, i) => el('option', { value: i, selected: i === fixture }, f.fixture)));
+      ...this.report!.fixtures.map((f, i) => (f.hidden ? null : el('option', { value: i, selected: i === fixture }, f.fixture))));
     return el('label', {}, 'On ', select);
   }
 
@@ -472,16 +498,27 @@ function resultOf(report: GradeReport, shown: number): PracticeRunResult {
   const fixture = report.fixtures[shown];
   return {
     passed: report.passed,
-    checks: report.checks.map(({ name, passed, message }) => ({ name, passed, message })),
+    score: report.score,
+    maxScore: report.maxScore,
+    checks: report.checks.map(({ name, passed, status, score, message, hidden }) => ({ name, passed, status, score, message, hidden: hidden === true })),
     writes: fixture.writes,
     firstBroken: fixture.firstBroken,
-    fixtures: report.fixtures.map((f) => ({ name: f.fixture, writes: f.writes, firstBroken: f.firstBroken })),
+    fixtures: report.fixtures.map((f) => ({ name: f.fixture, hidden: f.hidden, writes: f.writes, firstBroken: f.firstBroken })),
     error: null,
   };
 }
 
 function lineButton(line: number | null, go: (line: number) => void): HTMLElement | string {
   return line === null ? '' : el('button', { type: 'button', class: 'link', 'aria-label': `Go to line ${line} in the editor`, onclick: () => go(line) }, `line ${line}`);
+}
+
+/** What is kept for an exercise, or for one of its older ids (a `poke-face` solution for `inset-vertex`). */
+function savedFor(exercise: Exercise): Saved | null {
+  for (const id of [exercise.id, ...(exercise.aliases ?? [])]) {
+    const value = saved(id);
+    if (value) return value;
+  }
+  return null;
 }
 
 function saved(id: string): Saved | null {
