@@ -41,13 +41,15 @@ export async function gradeCourse(coursePath: string, submission: string, run: S
   const summary: string[] = [];
   let scored = 0;
   for (const exercise of exercises) {
-    const { passed, outputs, note } = await gradeExercise(exercise, submission, run);
+    const { earned, outputs, note } = await gradeExercise(exercise, submission, run);
     const { id } = exercise.exercise;
-    const shares = sharePoints(exercise.entry.points, passed.length);
+    const shares = sharePoints(exercise.entry.points, earned.length);
     let got = 0;
     checkNames(exercise.exercise).forEach((check, i) => {
-      got += passed[i] ? shares[i] : 0;
-      tests.push({ name: `${id}: ${check}`, score: passed[i] ? shares[i] / 100 : 0, max_score: shares[i] / 100, status: passed[i] ? 'passed' : 'failed', output: outputs[i] });
+      // in hundredths of a point: a hard case refused cleanly earns its share in part (PARTIAL_CREDIT)
+      const score = Math.round(shares[i] * earned[i]);
+      got += score;
+      tests.push({ name: `${id}: ${check}`, score: score / 100, max_score: shares[i] / 100, status: earned[i] === 1 ? 'passed' : 'failed', output: outputs[i] });
     });
     scored += got;
     summary.push(`${id} (${exercise.entry.file}): ${got / 100} of ${exercise.entry.points} points${note ? `; ${note}` : ''}`);
@@ -56,8 +58,8 @@ export async function gradeCourse(coursePath: string, submission: string, run: S
 }
 
 interface ExerciseOutcome {
-  /** Per check, in the order of `checkNames`. */
-  passed: boolean[];
+  /** Per check, in the order of `checkNames`: the part of its share it earns, 0 … 1. */
+  earned: number[];
   outputs: string[];
   /** For the summary line: why every check failed, or where the file was found. */
   note: string | null;
@@ -65,13 +67,13 @@ interface ExerciseOutcome {
 
 async function gradeExercise({ exercise, files, entry }: CourseExercise, submission: string, run: SolutionRunner): Promise<ExerciseOutcome> {
   const count = checkNames(exercise).length;
-  const failAll = (message: string): ExerciseOutcome => ({ passed: Array(count).fill(false), outputs: Array(count).fill(message), note: message });
+  const failAll = (message: string): ExerciseOutcome => ({ earned: Array(count).fill(0), outputs: Array(count).fill(message), note: message });
   const found = findSubmitted(submission, entry.file);
   if ('missing' in found) return failAll(found.missing);
   try {
     const report = await gradeSolution(exercise, readFileSync(found.path, 'utf8'), run, files);
     if (report.checks.length !== count) throw new Error(`${report.checks.length} checks ran where ${count} were expected`);
-    return { passed: report.checks.map((c) => c.passed), outputs: report.checks.map((c) => c.message), note: found.note };
+    return { earned: report.checks.map((c) => c.score), outputs: report.checks.map((c) => c.message), note: found.note };
   } catch (error) {
     if (error instanceof SolutionError) return failAll(`${entry.file}: ${error.message}`);
     // the autograder's own failure (a reference that fails its fixture): no points, and why, for the instructor too

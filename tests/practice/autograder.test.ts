@@ -123,7 +123,7 @@ describe('autograder: a course in a box', () => {
       'boundary-edges.js': 'docs/examples/boundary-edges/reference.js',
       'flip-edge.js': 'tests/practice/solutions/flip-edge.js',
       'split-edge.js': 'tests/practice/solutions/wrong/split-forgets-face.js',
-      // no poke-face.js
+      // no inset-vertex.js
       'collapse-edge.js': 'tests/practice/solutions/collapse-edge.js',
       'loop-subdivision.js': 'tests/practice/solutions/wrong/syntax.js',
     });
@@ -132,7 +132,7 @@ describe('autograder: a course in a box', () => {
       'flip-edge.js': 'tests/practice/solutions/flip-edge.js',
       'split-edge.js': 'tests/practice/solutions/split-edge.js',
       // uploaded as a folder: found below the top
-      'homework/poke-face.js': 'tests/practice/solutions/poke-face.js',
+      'homework/inset-vertex.js': 'tests/practice/solutions/inset-vertex.js',
       'collapse-edge.js': 'tests/practice/solutions/collapse-edge.js',
       'loop-subdivision.js': 'tests/practice/solutions/loop-subdivision.js',
     });
@@ -144,7 +144,7 @@ describe('autograder: a course in a box', () => {
 
   it('writes a zip with setup.sh and run_autograder at its root, executable, beside the grader, the course and the instructor exercise', () => {
     expect(made.status).toBe(0);
-    expect(made.stdout).toContain('6 exercises, 42 tests, 30 points');
+    expect(made.stdout).toContain('6 exercises, 49 tests, 30 points');
     expect(files.map((f) => f.name).sort()).toEqual([
       'course.json',
       'exercises/0-boundary-edges/exercise.json',
@@ -185,11 +185,11 @@ describe('autograder: a course in a box', () => {
     expect(split.map((t) => t.status)).toEqual(['failed', 'passed', 'failed', 'passed', 'failed', 'passed']);
     expect(split.map((t) => t.max_score)).toEqual([0.84, 0.84, 0.83, 0.83, 0.83, 0.83]);
     expect(split[0].output).toMatch(/breaks an invariant: .*, since write \d+/);
-    const poke = mixed.tests.filter((t) => t.name.startsWith('poke-face: '));
-    expect(poke).toHaveLength(checkNames(findExercise('poke-face')!).length);
+    const poke = mixed.tests.filter((t) => t.name.startsWith('inset-vertex: '));
+    expect(poke).toHaveLength(checkNames(findExercise('inset-vertex')!).length);
     for (const test of poke) {
       expect(test).toMatchObject({ score: 0, status: 'failed' });
-      expect(test.output).toContain("your submission has no file named poke-face.js: submit this exercise's solution as poke-face.js");
+      expect(test.output).toContain("your submission has no file named inset-vertex.js: submit this exercise's solution as inset-vertex.js");
     }
     const loop = mixed.tests.filter((t) => t.name.startsWith('loop-subdivision: '));
     expect(loop.every((t) => t.score === 0 && t.output === 'loop-subdivision.js: line 2: syntax error: Unexpected token (column 31)')).toBe(true);
@@ -197,7 +197,7 @@ describe('autograder: a course in a box', () => {
       'boundary-edges (boundary-edges.js): 3 of 3 points',
       'flip-edge (flip-edge.js): 5 of 5 points',
       'split-edge (split-edge.js): 2.5 of 5 points',
-      expect.stringMatching(/^poke-face \(poke-face\.js\): 0 of 4 points; your submission has no file named poke-face\.js.*\(it has boundary-edges\.js, collapse-edge\.js/),
+      expect.stringMatching(/^inset-vertex \(inset-vertex\.js\): 0 of 4 points; your submission has no file named inset-vertex\.js.*\(it has boundary-edges\.js, collapse-edge\.js/),
       'collapse-edge (collapse-edge.js): 6 of 6 points',
       'loop-subdivision (loop-subdivision.js): 0 of 7 points; loop-subdivision.js: line 2: syntax error: Unexpected token (column 31)',
     ]);
@@ -209,7 +209,7 @@ describe('autograder: a course in a box', () => {
     expect(correct.score).toBe(30);
     const course = JSON.parse(readFileSync(join(repo, 'docs/examples/course/COURSE.json'), 'utf8')) as { exercises: { id?: string; points: number }[] };
     for (const { id, points: worth } of course.exercises) if (id) expect(points(correct, id).max).toBe(worth * 100);
-    expect(correct.output).toContain('poke-face (poke-face.js): 4 of 4 points; graded homework/poke-face.js');
+    expect(correct.output).toContain('inset-vertex (inset-vertex.js): 4 of 4 points; graded homework/inset-vertex.js');
   });
 
   it('has a setup.sh that bash reads, and that does nothing where Node.js 20 or later is installed', () => {
@@ -241,7 +241,7 @@ describe('autograder: the course file', () => {
     [{ exercises: [{ id: 'flip-edge', file: 'hw/a.js', points: 1 }] }, 'COURSE.json: exercises[0].file: must be a file name such as "flip-edge.js", without a folder'],
     [{ exercises: [{ id: 'flip-edge', points: 1 }] }, 'COURSE.json: exercises[0].file: must be a file name'],
     [{ exercises: [{ id: 'flip-edge', file: 'a.js', points: 1 }, { id: 'split-edge', file: 'a.js', points: 1 }] }, 'COURSE.json: exercises[1].file: "a.js" is already the file of exercises[0]'],
-    [{ exercises: [{ id: 'flip-edge', file: 'a.js', points: 1 }, { id: 'split-edge', file: 'b.js', points: 1 }, { id: 'poke-face', file: 'c.js', points: -2 }] }, 'COURSE.json: exercises[2].points: must be a positive number'],
+    [{ exercises: [{ id: 'flip-edge', file: 'a.js', points: 1 }, { id: 'split-edge', file: 'b.js', points: 1 }, { id: 'inset-vertex', file: 'c.js', points: -2 }] }, 'COURSE.json: exercises[2].points: must be a positive number'],
     [{ exercises: [{ id: 'flip-edge', file: 'a.js', points: '6' }] }, 'COURSE.json: exercises[0].points: must be a positive number'],
     [{ exercises: [{ id: 'flip-edge', file: 'a.js', points: 0.125 }] }, 'COURSE.json: exercises[0].points: must be a positive number in hundredths at most'],
     [{ exercises: [{ id: 'flip-edge', file: 'a.js', pionts: 6 }] }, 'COURSE.json: exercises[0].pionts: unknown field'],
@@ -279,7 +279,7 @@ describe('autograder: the course file', () => {
     const folder = mkdtempSync(join(tmpdir(), 'halfedge-course-'));
     try {
       const course = join(folder, 'COURSE.json');
-      writeFileSync(course, JSON.stringify({ exercises: [{ id: 'flip-edge', file: 'a.js', points: 2 }, { id: 'split-edge', file: 'b.js', points: 1 }, { id: 'poke-face', file: 'c.js', points: 0 }] }));
+      writeFileSync(course, JSON.stringify({ exercises: [{ id: 'flip-edge', file: 'a.js', points: 2 }, { id: 'split-edge', file: 'b.js', points: 1 }, { id: 'inset-vertex', file: 'c.js', points: 0 }] }));
       const run = await cli('autograder', course, '--out', join(folder, 'a.zip'));
       expect(run.status).toBe(2);
       expect(run.stderr).toBe(`halfedge-lab: ${course}: exercises[2].points: must be a positive number\n`);
