@@ -607,6 +607,30 @@ export const exercises: Exercise[] = [
     ],
     reference: (mesh) => subdivide(mesh, 'catmull-clark', 1),
   },
+  {
+    id: 'linear-subdivision',
+    title: 'Linear subdivision',
+    kind: 'edit',
+    answer: 'none',
+    task: [
+      "Apply one level of linear subdivision to the mesh, in place: Catmull-Clark's connectivity (every face of n sides becomes n quads) with the simplest positions. Faces may have any number of sides.",
+      'New points: a face point at the centroid of each face (the average of its corners) and an edge point at the midpoint of each edge. Each quad joins a face point, an edge point, an old corner and the next edge point. The old vertices stay where they are.',
+    ],
+    hints: [
+      'Compute the face points from the old mesh first, then change the connectivity.',
+      'Split every old edge at its midpoint (your split-edge, without cutting the faces): every face now has twice as many sides, old corners and edge points taking turns.',
+      'Then, in each face, add its face point and join it to each edge point of the face: n new edges, and n quads (the face keeps its id as one of them).',
+    ],
+    starter: starter('no input. Subdivide the mesh once, in place.', '  const oldEdges = mesh.edges();\n  const oldFaces = mesh.faces();\n'),
+    fixtures: [
+      { name: 'a cube', shapes: [['cube']] },
+      { name: 'a tetrahedron (triangles)', shapes: [['tetrahedron']] },
+      { name: 'a grid of quads', shapes: [['grid', 2, 2, 1]] },
+      hidden('an L-shaped hexagon alone', 'A face of any number of sides becomes that many quads around its face point.', { off: L_HEXAGON }),
+      hidden('two components: a cube and a fan', 'Every component is subdivided.', { shapes: [['cube'], ['fan', 3]] }),
+    ],
+    reference: (mesh) => subdivide(mesh, 'linear', 1),
+  },
 ];
 
 /** The built-in exercise with this id, or with this as one of its older ids (`poke-face`). */
