@@ -60,7 +60,7 @@
 import { vertexOutgoingHalfedges } from '../circulators.js';
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { missingEdge, missingVertex } from './find.js';
+import { missingEdge, missingVertex, rotationFrom } from './find.js';
 import { type EditOptions, type FaceEditResult, PointerWriter } from './writer.js';
 
 export interface BevelOptions extends EditOptions {
@@ -244,15 +244,3 @@ function closeLoop(w: PointerWriter, f: number, loop: number[]): void {
   w.setFaceHalfedge(f, loop[0]);
 }
 
-/** The halfedges leaving origin(h), counter-clockwise from h. O(degree), bounded. */
-function rotationFrom(mesh: HalfedgeMesh, h: number): number[] {
-  const { hePrev } = mesh;
-  const rotation: number[] = [];
-  let g = h;
-  do {
-    rotation.push(g);
-    g = hePrev[g] ^ 1;
-    if (rotation.length > mesh.halfedgeSlots) throw new TopologyError(`the rotation around v${mesh.heVertex[h]} does not close`);
-  } while (g !== h);
-  return rotation;
-}

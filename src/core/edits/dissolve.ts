@@ -63,7 +63,7 @@
  */
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { halfedgeFromTo, missingEdge, missingVertex } from './find.js';
+import { halfedgeFromTo, missingEdge, missingVertex, rotationFrom } from './find.js';
 import { canMakeBoundary, makeBoundaryAt } from './make-boundary.js';
 import { type EditOptions, type FaceEditResult, PointerWriter } from './writer.js';
 
@@ -166,24 +166,13 @@ export function mergeAcrossAt(w: PointerWriter, e: number): number {
 // ---------------------------------------------------------------------------------------------
 // Dissolve vertex
 
-/**
- * The halfedges leaving v, counter-clockwise (the rotation `x → twin(prev(x))`), from its handle:
- * at a boundary vertex the first is the outgoing boundary halfedge.
- * Face i of the fan is `face(x_i)`, between x_i and `prev(x_i)`; its *far path*, the part of its
- * outline away from v, runs from `next(x_i)` to `prev(prev(x_i))`, from x_i's target to
+/*
+ * Around the vertex: `out` lists the halfedges leaving v, counter-clockwise (each the next one's
+ * `twin(prev(x))`), from its handle: at a boundary vertex the first is the outgoing boundary
+ * halfedge. Face i of the fan is `face(x_i)`, between x_i and `prev(x_i)`; its *far path*, the part
+ * of its outline away from v, runs from `next(x_i)` to `prev(prev(x_i))`, from x_i's target to
  * x_(i+1)'s, so the far paths one after another are the merged face's outline.
  */
-function outgoing(mesh: HalfedgeMesh, v: number): number[] {
-  const { hePrev } = mesh;
-  const out: number[] = [];
-  const start = mesh.vHalfedge[v];
-  let x = start;
-  do {
-    out.push(x);
-    x = hePrev[x] ^ 1;
-  } while (x !== start && out.length <= mesh.halfedgeSlots);
-  return out;
-}
 
 /**
  * Why vertex `v` cannot be dissolved, or null when it can (the rules above).
@@ -194,7 +183,7 @@ export function canDissolveVertex(mesh: HalfedgeMesh, v: number): string | null 
   if (missing) return missing;
   if (mesh.vHalfedge[v] === -1) return `v${v} has no edges: there are no faces around it to merge`;
   const { heNext, hePrev, heVertex, heFace } = mesh;
-  const out = outgoing(mesh, v);
+  const out = rotationFrom(mesh, mesh.vHalfedge[v]);
   const boundary = heFace[out[0]] === -1;
   const first = boundary ? 1 : 0;
   if (boundary && out.length === 2) {
@@ -250,7 +239,7 @@ export function dissolveVertex(mesh: HalfedgeMesh, v: number, options: EditOptio
   // arrays, so that those read below are the grown ones
   const ne = boundary ? w.addEdge() : -1;
   const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
-  const out = outgoing(mesh, v);
+  const out = rotationFrom(mesh, mesh.vHalfedge[v]);
   const d = out.length;
   const first = boundary ? 1 : 0;
   // each face's far path, by its first and last halfedge, and the halfedge into v after it; all

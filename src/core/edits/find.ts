@@ -1,4 +1,5 @@
 /** Small look-ups the edits share. */
+import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 
 /**
@@ -51,4 +52,20 @@ export function missingVertex(mesh: HalfedgeMesh, v: number): string | null {
 export function missingFace(mesh: HalfedgeMesh, f: number): string | null {
   if (!Number.isInteger(f) || f < 0 || f >= mesh.faceSlots) return `f${f} is not a face of this mesh (ids run 0…${mesh.faceSlots - 1})`;
   return mesh.fDeleted[f] ? `f${f} is deleted` : null;
+}
+
+/**
+ * The halfedges leaving origin(h), counter-clockwise from h (each the next one's `prev.twin`): a
+ * walk bounded by the halfedge count, which throws on a rotation that does not close (an invalid mesh).
+ */
+export function rotationFrom(mesh: HalfedgeMesh, h: number): number[] {
+  const { hePrev } = mesh;
+  const rotation: number[] = [];
+  let g = h;
+  do {
+    rotation.push(g);
+    g = hePrev[g] ^ 1;
+    if (rotation.length > mesh.halfedgeSlots) throw new TopologyError(`the rotation around v${mesh.heVertex[h]} does not close`);
+  } while (g !== h);
+  return rotation;
 }

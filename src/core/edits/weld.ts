@@ -42,7 +42,7 @@
  */
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { missingEdge } from './find.js';
+import { missingEdge, rotationFrom } from './find.js';
 import { type EdgeEditResult, type EditOptions, PointerWriter } from './writer.js';
 
 /** The halves of a merged pair, blended half and half. */
@@ -53,17 +53,6 @@ function boundaryHalfedge(mesh: HalfedgeMesh, e: number): number {
   return mesh.heFace[2 * e] === -1 ? 2 * e : 2 * e + 1;
 }
 
-/** The halfedges leaving `v`, rotating from `start` (a bounded walk). */
-function leaving(mesh: HalfedgeMesh, start: number): number[] {
-  const { hePrev } = mesh;
-  const out: number[] = [];
-  let x = start;
-  do {
-    out.push(x);
-    x = hePrev[x] ^ 1;
-  } while (x !== start && out.length <= mesh.halfedgeSlots);
-  return out;
-}
 
 /**
  * Why boundary edges `e1` and `e2` cannot be welded, or null when they can (the rules above).
@@ -102,8 +91,8 @@ export function canWeldEdges(mesh: HalfedgeMesh, e1: number, e2: number): string
  */
 function whyNotMerge(mesh: HalfedgeMesh, x: number, y: number, e2: number, merged: (u: number) => number): string | null {
   const { heVertex, heFace } = mesh;
-  const aroundX = leaving(mesh, mesh.vHalfedge[x]);
-  const aroundY = leaving(mesh, mesh.vHalfedge[y]);
+  const aroundX = rotationFrom(mesh, mesh.vHalfedge[x]);
+  const aroundY = rotationFrom(mesh, mesh.vHalfedge[y]);
   // joined already: their edge would become a loop
   for (const g of aroundX) {
     if (heVertex[g ^ 1] === y) return `v${x} and v${y} would merge, but e${g >> 1} joins them: it would become a loop`;
@@ -160,8 +149,8 @@ export function weldEdges(mesh: HalfedgeMesh, e1: number, e2: number, options: E
   const zipAtB1 = b1 === a2; // h1 then h2: next(h1) = h2
   const zipAtA1 = a1 === b2; // h2 then h1: next(h2) = h1
   // the halfedges that will leave a1 and b1 instead of b2 and a2 (not e2's: it goes)
-  const fromB2 = zipAtA1 ? [] : leaving(mesh, t2).slice(1);
-  const fromA2 = zipAtB1 ? [] : leaving(mesh, h2).slice(1);
+  const fromB2 = zipAtA1 ? [] : rotationFrom(mesh, t2).slice(1);
+  const fromA2 = zipAtB1 ? [] : rotationFrom(mesh, h2).slice(1);
 
   // merged ends at their midpoints, every vertex attribute averaged
   if (!zipAtA1) w.blend('vertex', a1, [a1, b2], halves);
@@ -195,7 +184,7 @@ export function weldEdges(mesh: HalfedgeMesh, e1: number, e2: number, options: E
  */
 function chooseHandle(w: PointerWriter, v: number, from: number): void {
   const { heFace, vHalfedge, eDeleted } = w.mesh;
-  const out = leaving(w.mesh, from);
+  const out = rotationFrom(w.mesh, from);
   const boundary = out.find((g) => heFace[g] === -1);
   if (boundary !== undefined) {
     if (vHalfedge[v] !== boundary) w.setVertexHalfedge(v, boundary);
