@@ -27,7 +27,7 @@ describe('every exercise', () => {
       'vertex-degree', 'face-degree', 'one-ring', 'is-boundary-vertex', 'boundary-loops', 'euler-characteristic',
       'flip-edge', 'split-edge', 'collapse-edge', 'inset-vertex', 'extrude-face', 'bevel-vertex', 'bevel-edge',
       'dissolve-edge', 'dissolve-vertex', 'collapse-face', 'make-boundary', 'weld-edges', 'triangulate',
-      'loop-subdivision', 'catmull-clark', 'linear-subdivision',
+      'loop-subdivision', 'catmull-clark', 'linear-subdivision', 'isotropic-remesh', 'simplify',
     ]);
     for (const exercise of exercises) {
       expect(exercise.task.length).toBeGreaterThan(0);
@@ -41,7 +41,7 @@ describe('every exercise', () => {
     expect(findExercise('poke-face')!.id).toBe('inset-vertex');
   });
 
-  const operations = ['inset-vertex', 'extrude-face', 'bevel-vertex', 'bevel-edge', 'dissolve-edge', 'dissolve-vertex', 'collapse-face', 'make-boundary', 'weld-edges', 'triangulate', 'catmull-clark', 'linear-subdivision'];
+  const operations = ['flip-edge', 'split-edge', 'collapse-edge', 'inset-vertex', 'extrude-face', 'bevel-vertex', 'bevel-edge', 'dissolve-edge', 'dissolve-vertex', 'collapse-face', 'make-boundary', 'weld-edges', 'triangulate', 'catmull-clark', 'linear-subdivision'];
 
   it('gives every local operation hidden fixtures, each with its rule, for cases the library does and cases it refuses', () => {
     for (const id of operations) {

@@ -28,8 +28,8 @@ describe('grade on the command line', () => {
     const { status, stdout } = await grade('collapse-edge', 'tests/practice/solutions/collapse-edge.js', '--json');
     expect(status).toBe(0);
     const results = JSON.parse(stdout);
-    expect(results.score).toBe(10);
-    expect(results.max_score).toBe(10);
+    expect(results.score).toBe(16);
+    expect(results.max_score).toBe(16);
     expect(results.tests[0]).toEqual({ name: 'an edge inside a disk: valid mesh', score: 1, max_score: 1, status: 'passed', output: 'passed' });
   });
 

@@ -15,8 +15,17 @@ export const inProcess: SolutionRunner = async (source, runs) => {
   return outputs;
 };
 
+/**
+ * A test solution's source. A global operation builds on the local ones as a student's would: a
+ * line `// with: split-edge as splitEdge, …` appends those solutions, each default export renamed.
+ */
 export function solution(name: string): string {
-  return readFileSync(new URL(`./solutions/${name}.js`, import.meta.url), 'utf8');
+  const source = readFileSync(new URL(`./solutions/${name}.js`, import.meta.url), 'utf8');
+  const uses = /^\/\/ with: (.*)$/m.exec(source)?.[1].split(', ') ?? [];
+  return [source, ...uses.map((use) => {
+    const [file, alias] = use.split(' as ');
+    return solution(file).replace('export default function', `function ${alias}`);
+  })].join('\n');
 }
 
 export function grade(exercise: string, solutionName: string): Promise<GradeReport> {

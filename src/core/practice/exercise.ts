@@ -10,6 +10,7 @@ import { readMesh } from '../io/read.js';
 import { encodeText } from '../io/text.js';
 import * as shapes from '../shapes.js';
 import { mergeSoups, type PolygonSoup } from '../soup.js';
+import type { ResultBounds } from './properties.js';
 
 /**
  * How a solution's return value is compared with the reference's:
@@ -28,9 +29,14 @@ export const answerKinds: readonly AnswerKind[] = ['exact', 'cycle', 'vertex', '
  * - `mesh`: the same mesh up to ids (vertices by position, faces and holes by their corners);
  * - `triangulation`: the same vertices and holes, every face the library cut cut into triangles
  *   along any diagonals that do not fold over (so any correct triangulation passes, not only the
- *   library's ear clipping), and every face it left as it was left so.
+ *   library's ear clipping), and every face it left as it was left so;
+ * - `properties`: not compared with the library's at all, for an operation with no single right
+ *   answer (remeshing, simplification): triangles, the input's topology, and the exercise's
+ *   `bounds` (see `properties.ts`).
  */
-export type MeshComparison = 'mesh' | 'triangulation';
+export type MeshComparison = 'mesh' | 'triangulation' | 'properties';
+
+export const meshComparisons: readonly MeshComparison[] = ['mesh', 'triangulation', 'properties'];
 
 /**
  * What a solution is called with: an element id (`7`), a list of ids (two edges to weld, `[3, 8]`),
@@ -86,6 +92,8 @@ export interface Exercise {
   refusal?: -1 | false;
   /** How the mesh an edit leaves is compared (default `mesh`). */
   compare?: MeshComparison;
+  /** What a result compared by `properties` must reach. */
+  bounds?: ResultBounds;
   /** The task, as paragraphs of plain text. */
   task: string[];
   hints: string[];
@@ -183,7 +191,9 @@ export function parseExercise(doc: unknown, referenceSource: string): Exercise {
   const answer = text('answer');
   if (!(answerKinds as readonly string[]).includes(answer)) bad('answer', `must be ${answerKinds.map((a) => `"${a}"`).join(', ')}`);
   if (d.refusal !== undefined && d.refusal !== -1 && d.refusal !== false) bad('refusal', 'must be -1 or false: what the solution returns when the edit does not apply');
-  if (d.compare !== undefined && d.compare !== 'mesh' && d.compare !== 'triangulation') bad('compare', 'must be "mesh" or "triangulation"');
+  if (d.compare !== undefined && !(meshComparisons as readonly unknown[]).includes(d.compare)) bad('compare', `must be ${meshComparisons.map((c) => `"${c}"`).join(', ')}`);
+  if (d.compare === 'properties') parseBounds(d.bounds, bad);
+  else if (d.bounds !== undefined) bad('bounds', 'is for "compare": "properties" only');
   if (!Array.isArray(d.fixtures) || d.fixtures.length === 0) bad('fixtures', 'must be a non-empty list');
   const fixtures = (d.fixtures as unknown[]).map((f, i): Fixture => {
     const where = `fixtures[${i}]`;
@@ -216,10 +226,25 @@ export function parseExercise(doc: unknown, referenceSource: string): Exercise {
     answer: answer as AnswerKind,
     ...(d.refusal !== undefined ? { refusal: d.refusal as -1 | false } : {}),
     ...(d.compare !== undefined ? { compare: d.compare as MeshComparison } : {}),
+    ...(d.bounds !== undefined ? { bounds: d.bounds as ResultBounds } : {}),
     task: texts('task'),
     hints: d.hints === undefined ? [] : texts('hints'),
     starter: text('starter'),
     fixtures,
     reference: referenceSource,
   };
+}
+
+/** Checks the `bounds` of an exercise graded by properties: shares in (0, 1], at least one target. */
+function parseBounds(bounds: unknown, bad: (field: string, what: string) => never): void {
+  if (!bounds || typeof bounds !== 'object' || Array.isArray(bounds)) bad('bounds', 'must be an object such as { "shareNearTarget": 0.6, "maxDistance": 0.02 }');
+  const b = bounds as Record<string, unknown>;
+  const share = (x: unknown) => typeof x === 'number' && x > 0 && x <= 1;
+  if (!share(b.maxDistance)) bad('bounds.maxDistance', 'must be a share of the input\'s size, above 0 and at most 1');
+  for (const name of ['shareNearTarget', 'shareOfTargetFaces']) {
+    if (b[name] !== undefined && !share(b[name])) bad(`bounds.${name}`, 'must be a share, above 0 and at most 1');
+  }
+  const known = ['maxDistance', 'shareNearTarget', 'shareOfTargetFaces'];
+  const unknown = Object.keys(b).find((name) => !known.includes(name));
+  if (unknown) bad(`bounds.${unknown}`, `is not a bound (known: ${known.join(', ')})`);
 }

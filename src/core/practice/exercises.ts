@@ -2,7 +2,8 @@
  * The built-in exercises, easiest first: queries that walk the pointers, the local edits of every
  * halfedge course (flip, split, collapse), the local operations of the halfedge assignment (inset
  * a vertex, extrude, bevel, dissolve, collapse a face, make a hole, weld, triangulate), then one
- * level of Loop and of Catmull-Clark subdivision. Each reference is the library's own function;
+ * level of Loop, Catmull-Clark and linear subdivision, isotropic remeshing and simplification (the
+ * last two graded by the properties of the result: they have no single right answer). Each reference is the library's own function;
  * the fixtures hold the hard cases (boundaries, valence 3, a forbidden collapse, several
  * components), and those of the assignment's operations are hidden: graded by the rule they
  * state, their mesh never shown (see `Fixture.hidden`). A solution that is right for each, written
@@ -21,7 +22,10 @@ import { canMakeBoundary, makeBoundary } from '../edits/make-boundary.js';
 import { canWeldEdges, weldEdges } from '../edits/weld.js';
 import { splitEdgeTriangulated } from '../edits/split-edge.js';
 import { subdivide } from '../subdivision/index.js';
+import { remesh } from '../remeshing/index.js';
+import { decimate } from '../decimation/index.js';
 import type { Exercise, ExerciseInput, Fixture } from './exercise.js';
+import type { ResultBounds } from './properties.js';
 
 /** The input of a fixture that gives one id. */
 const id = (input: ExerciseInput | undefined) => input as number;
@@ -62,6 +66,12 @@ const L_HEXAGON = 'OFF\n6 1 0\n0 0 0\n3 0 0\n3 1 0\n1 1 0\n1 2 0\n0 2 0\n6 2 3 4
 const FLAT_QUAD_AND_SQUARE = 'OFF\n8 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n0 1 0\n1 1 0\n1 2 0\n0 2 0\n4 0 1 2 3\n4 4 5 6 7\n';
 
 const SLIVER_UNDER_PENTAGON = 'OFF\n5 2 0\n0 0 0\n2 0 0\n2 1 0\n0 1 0\n1 0 0\n5 0 4 1 2 3\n3 0 1 4\n';
+
+/** What a remeshing must reach (the library's own result reaches it with room on every fixture: tests/practice/properties.test.ts). */
+const REMESH_BOUNDS: ResultBounds = { shareNearTarget: 0.5, maxDistance: 0.04 };
+
+/** What a simplification must reach (the library's own result, as for remeshing). */
+const SIMPLIFY_BOUNDS: ResultBounds = { shareOfTargetFaces: 0.9, maxDistance: 0.05 };
 
 const starter = (comment: string, body: string) => `// ${comment}\nexport default function (mesh, input) {\n${body}\n}\n`;
 
@@ -175,6 +185,7 @@ export const exercises: Exercise[] = [
     title: 'Flip an edge',
     kind: 'edit',
     answer: 'exact',
+    refusal: false,
     task: [
       'Turn edge `input` between two triangles so that it joins their other two corners; return true.',
       'Return false and change nothing when the flip does not apply: a boundary edge, a face that is not a triangle, or the two other corners already joined by an edge.',
@@ -190,9 +201,12 @@ export const exercises: Exercise[] = [
     fixtures: [
       { name: 'an edge inside a disk', shapes: [['disk', 2]], input: 10 },
       { name: 'an edge at the centre of a disk (valence 6)', shapes: [['disk', 1]], input: 0 },
-      { name: 'a boundary edge (refused)', shapes: [['disk', 1]], input: 1 },
-      { name: 'an edge of a tetrahedron (the other corners are joined: refused)', shapes: [['tetrahedron']], input: 0 },
-      { name: 'an edge between quads (refused)', shapes: [['cube']], input: 0 },
+      { name: 'a boundary edge (refused)', shapes: [['disk', 1]], input: 1, rule: 'A boundary edge has one triangle, and a flip needs two: return false and change nothing.' },
+      { name: 'an edge of a tetrahedron, whose other corners are joined (refused)', shapes: [['tetrahedron']], input: 0, rule: 'The new edge would repeat one that is there: return false and change nothing.' },
+      { name: 'an edge between quads (refused)', shapes: [['cube']], input: 0, rule: 'A flip turns an edge between two triangles: return false and change nothing.' },
+      hidden('an inner edge whose ends are both on the boundary', 'An edge between two triangles is flipped wherever its ends are, the boundary included.', { shapes: [['grid', 2, 2]], input: 7 }),
+      hidden('an edge of the second of two components', 'Ids are not positions: the edge can be anywhere, and nothing else moves.', { shapes: [['tetrahedron'], ['disk', 1]], input: 6 }),
+      hidden('two triangles back to back (refused)', 'When both triangles have the same three corners, the flip would join a vertex to itself: return false and change nothing.', { off: PILLOW, input: 0 }),
     ],
     reference: (mesh, e) => !canFlipEdge(mesh, id(e)) && (flipEdge(mesh, id(e)), true),
   },
@@ -215,6 +229,9 @@ export const exercises: Exercise[] = [
       { name: 'an edge inside a disk', shapes: [['disk', 2]], input: 10 },
       { name: 'an edge on the boundary', shapes: [['disk', 1]], input: 1 },
       { name: 'an edge of a tetrahedron (valence 3 corners)', shapes: [['tetrahedron']], input: 2 },
+      hidden('an inner edge whose ends are both on the boundary', 'The new vertex is inside when the edge is, even where both ends are on the boundary.', { shapes: [['grid', 2, 2]], input: 7 }),
+      hidden('the boundary side of a corner triangle', "On the boundary the hole gains a side, also where the triangle's other corner has only two edges.", { shapes: [['grid', 2, 2]], input: 5 }),
+      hidden('an edge of the second of two components', 'Ids are not positions: the edge can be anywhere, and nothing else moves.', { shapes: [['tetrahedron'], ['disk', 1]], input: 6 }),
     ],
     reference: (mesh, e) => splitEdgeTriangulated(mesh, id(e)).vertex,
   },
@@ -223,6 +240,7 @@ export const exercises: Exercise[] = [
     title: 'Collapse an edge',
     kind: 'edit',
     answer: 'vertex',
+    refusal: -1,
     task: [
       'Shrink edge `input` of a triangle mesh to one vertex at its midpoint; the triangles beside it disappear. Return the vertex that remains.',
       'Return -1 and change nothing when the collapse would break the mesh: the two ends share a neighbour that is not across a triangle of the edge (the link condition), the edge belongs to a tetrahedron, or both ends are on the boundary but the edge is not.',
@@ -238,8 +256,11 @@ export const exercises: Exercise[] = [
       { name: 'an edge inside a disk', shapes: [['disk', 2]], input: 10 },
       { name: 'an edge at the centre of a disk', shapes: [['disk', 2]], input: 0 },
       { name: 'an edge on the boundary', shapes: [['disk', 2]], input: 20 },
-      { name: 'an edge of a bipyramid whose ends share a third neighbour (link condition: refused)', shapes: [['uvSphere', 2, 3]], input: 1 },
-      { name: 'an edge of a tetrahedron (refused)', shapes: [['tetrahedron']], input: 0 },
+      { name: 'an edge of a bipyramid whose ends share a third neighbour, against the link condition (refused)', shapes: [['uvSphere', 2, 3]], input: 1, rule: 'Ends that share a neighbour not across the edge would join two edges into one: return -1 and change nothing.' },
+      { name: 'an edge of a tetrahedron (refused)', shapes: [['tetrahedron']], input: 0, rule: 'A tetrahedron has no edge to spare: return -1 and change nothing.' },
+      hidden('the boundary side of a corner triangle', 'A boundary edge whose triangle has a second boundary side collapses too: the triangle goes, and the hole loses a side.', { shapes: [['grid', 2, 2]], input: 5 }),
+      hidden('an inner edge whose ends are both on the boundary (refused)', 'An inner edge joining two boundary vertices would pinch the surface into a figure 8: return -1 and change nothing.', { shapes: [['grid', 2, 2]], input: 7 }),
+      hidden('a lone triangle (refused)', 'A triangle with no other face cannot lose a side: return -1 and change nothing.', { shapes: [['singleTriangle']], input: 0 }),
     ],
     reference: (mesh, e) => (canCollapseEdge(mesh, id(e)) ? -1 : collapseEdge(mesh, id(e)).vertex),
   },
@@ -630,6 +651,64 @@ export const exercises: Exercise[] = [
       hidden('two components: a cube and a fan', 'Every component is subdivided.', { shapes: [['cube'], ['fan', 3]] }),
     ],
     reference: (mesh) => subdivide(mesh, 'linear', 1),
+  },
+  {
+    id: 'isotropic-remesh',
+    title: 'Isotropic remeshing',
+    kind: 'edit',
+    answer: 'none',
+    compare: 'properties',
+    bounds: REMESH_BOUNDS,
+    task: [
+      'Remesh the triangle mesh in place so that its edges are all about `input.targetEdgeLength` long and its triangles nearly equilateral, in `input.iterations` rounds of four steps (Botsch & Kobbelt):',
+      '1. split every edge longer than 4/3 of the target at its midpoint; 2. collapse every edge shorter than 4/5 of it, unless the collapse would break the mesh or make an edge longer than 4/3 of the target; 3. flip every edge whose flip brings the valences of its four corners closer to 6 (4 on the boundary); 4. move each vertex part of the way toward the centroid of its neighbours, within its tangent plane.',
+      `There is no single right answer, so your result is checked for what remeshing promises: a valid mesh of triangles with the input's topology, at least ${REMESH_BOUNDS.shareNearTarget! * 100} % of its edges within 4/5 … 4/3 of the target, and every point within ${REMESH_BOUNDS.maxDistance * 100} % of the input's size of the input surface (and the input within that of yours). The boundary stays where it is.`,
+    ],
+    hints: [
+      'Reuse your split, collapse and flip. Before each step, list the edges to visit; an edge an earlier operation of the step deleted is skipped (check it still exists before you use it).',
+      'Collapse only where it is safe: the link condition (the ends share no neighbour but the corners across the edge), not both ends on the boundary unless the edge is, and no edge of the result longer than 4/3 of the target.',
+      'Flip when the sum of |valence − 6| over the four corners goes down (|valence − 4| for a boundary vertex), never a boundary edge.',
+      'Tangential smoothing: the move toward the centroid minus its part along the vertex normal. Leave boundary vertices where they are.',
+    ],
+    starter: starter('input: { targetEdgeLength, iterations }. Remesh the mesh in place.', '  const L = input.targetEdgeLength;\n  for (let i = 0; i < input.iterations; i++) {\n    // split, collapse, flip, smooth\n  }'),
+    fixtures: [
+      { name: 'a sphere, to edges as long as it has', shapes: [['uvSphere', 12, 8]], input: { targetEdgeLength: 0.46, iterations: 3 } },
+      { name: 'a disk, to shorter edges', shapes: [['disk', 4]], input: { targetEdgeLength: 0.2, iterations: 3 } },
+      { name: 'a grid, to longer edges', shapes: [['grid', 6, 6]], input: { targetEdgeLength: 0.28, iterations: 3 } },
+      hidden('a sphere, to much shorter edges', 'Edges far longer than the target are split until they are near it: every edge longer than 4/3 of it, again in each round.', { shapes: [['uvSphere', 8, 6]], input: { targetEdgeLength: 0.3, iterations: 3 } }),
+      hidden('a fan', 'The boundary is kept: boundary vertices stay on the boundary, and the hole keeps its one loop.', { shapes: [['fan', 6]], input: { targetEdgeLength: 0.3, iterations: 3 } }),
+      hidden('two components: a sphere and a disk', 'Every component is remeshed, none is joined to another, and none is lost.', { shapes: [['uvSphere', 12, 8], ['disk', 3]], input: { targetEdgeLength: 0.4, iterations: 3 } }),
+    ],
+    reference: (mesh, input) => remesh(mesh, named(input)),
+  },
+  {
+    id: 'simplify',
+    title: 'Simplification',
+    kind: 'edit',
+    answer: 'none',
+    compare: 'properties',
+    bounds: SIMPLIFY_BOUNDS,
+    task: [
+      'Simplify the triangle mesh in place until it has at most `input.faces` faces, by collapsing edges, cheapest first (Garland & Heckbert): each vertex carries a quadric, the sum of the squared distances to the planes of its triangles; an edge costs the quadric error of the point its collapse leaves, and that point is where the error is least.',
+      `There is no single right answer, so your result is checked for what simplification promises: a valid mesh of triangles with the input's topology, from ${SIMPLIFY_BOUNDS.shareOfTargetFaces! * 100} % of \`input.faces\` up to that many faces, and every point within ${SIMPLIFY_BOUNDS.maxDistance * 100} % of the input's size of the input surface (and the input within that of yours).`,
+    ],
+    hints: [
+      'Reuse your collapse, with its refusals: a collapse that breaks the link condition is skipped, and the next cheapest edge is tried.',
+      'A quadric is a symmetric 4 × 4 matrix (10 numbers): for a plane n·x + d = 0 it is [n, d][n, d]ᵀ, weighted by the triangle\'s area. A vertex\'s quadric is the sum of its triangles\'; a collapsed edge\'s, the sum of its two ends\'.',
+      'Where the 3 × 3 part of the quadric cannot be inverted (a flat neighbourhood), put the point at the edge\'s midpoint.',
+      'After a collapse, the edges around the kept vertex get new costs: recompute them (a priority queue with stale entries skipped works, and so does a plain search for the cheapest edge on a small mesh).',
+    ],
+    starter: starter('input: { faces }. Collapse edges until the mesh has at most that many faces.', '  while (mesh.faceCount() > input.faces) {\n    // find the cheapest edge that can collapse, and collapse it\n    break;\n  }'),
+    fixtures: [
+      { name: 'a sphere, to a quarter of its faces', shapes: [['uvSphere', 12, 8]], input: { faces: 44 } },
+      { name: 'a disk, to a quarter of its faces', shapes: [['disk', 4]], input: { faces: 24 } },
+      { name: 'a grid, to a quarter of its faces', shapes: [['grid', 6, 6]], input: { faces: 18 } },
+      hidden('a tetrahedron beside a sphere', 'A collapse that would break the mesh is never made: the tetrahedron cannot lose an edge, so the faces come off the sphere.', { shapes: [['tetrahedron'], ['uvSphere', 10, 6]], input: { faces: 28 } }),
+      hidden('two disks', 'Boundaries are kept: a boundary vertex stays on the boundary, and every component stays.', { shapes: [['disk', 3], ['disk', 3]], input: { faces: 20 } }),
+    ],
+    reference: (mesh, input) => {
+      decimate(mesh, { targetFaces: named(input).faces });
+    },
   },
 ];
 

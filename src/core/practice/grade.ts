@@ -18,7 +18,8 @@
 import type { HalfedgeMesh } from '../mesh.js';
 import { validate, type Violation } from '../validate.js';
 import { compareAnswers, compareMeshes, compareTriangulation } from './compare.js';
-import type { Exercise, Fixture } from './exercise.js';
+import type { Exercise, ExerciseInput, Fixture } from './exercise.js';
+import { checkProperties } from './properties.js';
 import type { RunOutput } from './run.js';
 import { applyWrite, describeWrite, type PracticeWrite, replayWrites } from './writes.js';
 
@@ -72,14 +73,18 @@ export interface FixtureResult {
 
 /**
  * What each fixture is checked for, by the kind of exercise: a query's answer; an edit's mesh
- * (valid) and result (as the library's). A solution that cannot load fails the same checks, so
- * an exercise is always worth the same points.
+ * (valid) and result (as the library's, or, where there is no single right answer, the properties
+ * the exercise asks for). A solution that cannot load fails the same checks, so an exercise is
+ * always worth the same points.
  */
-export const FIXTURE_CHECKS = { query: ['answer'], edit: ['valid mesh', 'same as the library'] } as const;
+export function fixtureChecks(exercise: Exercise): readonly string[] {
+  if (exercise.kind === 'query') return ['answer'];
+  return ['valid mesh', exercise.compare === 'properties' ? 'properties held' : 'same as the library'];
+}
 
 /** The name of every check a graded run of `exercise` gives, in order. */
 export function checkNames(exercise: Exercise): string[] {
-  return exercise.fixtures.flatMap((fixture) => FIXTURE_CHECKS[exercise.kind].map((what) => `${fixture.name}: ${what}`));
+  return exercise.fixtures.flatMap((fixture) => fixtureChecks(exercise).map((what) => `${fixture.name}: ${what}`));
 }
 
 /** Above this many validations' worth of work (writes × halfedges), the first broken write is not searched. */
@@ -101,7 +106,8 @@ export function gradeFixture(
 ): FixtureResult {
   const after = replayWrites(before.clone(), output.writes);
   const checks: Check[] = [];
-  const check = (what: (typeof FIXTURE_CHECKS)[keyof typeof FIXTURE_CHECKS][number], message: string | null) =>
+  const [, outcome] = fixtureChecks(exercise);
+  const check = (what: string, message: string | null) =>
     checks.push({ name: `${fixture.name}: ${what}`, passed: message === null, status: message === null ? 'passed' : 'failed', score: message === null ? 1 : 0, message: message ?? 'passed' });
   const failure = output.error ? describeError(output) : null;
   let firstBroken: FirstBroken | null = null;
@@ -121,7 +127,7 @@ export function gradeFixture(
   } else if (fixture.hidden && refusedCleanly && !libraryRefuses) {
     // a hard case refused cleanly that the library handles: part of the point, on both checks
     const refused = `your code refused this case cleanly (it returned ${String(refusal)} and left the mesh as it was), but the library does the edit`;
-    for (const what of FIXTURE_CHECKS.edit) {
+    for (const what of fixtureChecks(exercise)) {
       const name = `${fixture.name}: ${what}`;
       if (partialCredit) checks.push({ name, passed: false, status: 'partial', score: PARTIAL_CREDIT, message: `${refused}: ${PARTIAL_CREDIT} of the point` });
       else checks.push({ name, passed: false, status: 'failed', score: 0, message: `${refused} (a clean refusal earns ${PARTIAL_CREDIT} of the point once every fixture that is not hidden passes)` });
@@ -131,13 +137,7 @@ export function gradeFixture(
     if (problems.length > 0) firstBroken = findFirstBroken(before, output.writes, problems);
     check('valid mesh', problems.length === 0 ? null : describeBroken(problems, firstBroken, output));
     const refusedNeedlessly = refusedCleanly && !libraryRefuses ? `your code returned ${String(refusal)} and changed nothing, but this case needs no refusing: the library does the edit` : null;
-    check(
-      'same as the library',
-      failure ??
-        refusedNeedlessly ??
-        compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ??
-        (exercise.compare === 'triangulation' ? compareTriangulation(after, reference.mesh, before) : compareMeshes(after, reference.mesh)),
-    );
+    check(outcome, failure ?? refusedNeedlessly ?? compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ?? compareResult(exercise, before, after, reference.mesh, fixture.input));
   }
   if (fixture.hidden) {
     for (const c of checks) {
@@ -151,6 +151,18 @@ export function gradeFixture(
   return { fixture: fixture.name, hidden: false, checks, writes: output.writes, visits: output.visits, reads: output.reads, firstBroken, after };
 }
 
+/** Null when the mesh an edit left is right, as the exercise compares it, else the first difference. */
+function compareResult(exercise: Exercise, before: HalfedgeMesh, after: HalfedgeMesh, reference: HalfedgeMesh, input: ExerciseInput | undefined): string | null {
+  switch (exercise.compare ?? 'mesh') {
+    case 'mesh':
+      return compareMeshes(after, reference);
+    case 'triangulation':
+      return compareTriangulation(after, reference, before);
+    case 'properties':
+      return checkProperties(after, before, input, exercise.bounds!);
+  }
+}
+
 /** What went wrong on a hidden fixture, without an id of its mesh (nor a value that would give one away). */
 function hiddenFailure(check: Check, output: RunOutput, refusal: -1 | false | undefined, libraryRefuses: boolean): string {
   const error = output.error;
@@ -161,7 +173,7 @@ function hiddenFailure(check: Check, output: RunOutput, refusal: -1 | false | un
   if (check.name.endsWith(': valid mesh')) return 'the mesh your code left breaks an invariant';
   if (check.name.endsWith(': answer')) return output.writes.length > 0 ? 'a query must leave the mesh as it is, but your code wrote to it' : "your answer is not the library's";
   if (libraryRefuses) return `the library refuses this case, but your code did not return ${String(refusal)} and leave the mesh as it was`;
-  return "your result is not the library's";
+  return check.name.endsWith(': properties held') ? 'your result lacks a property the exercise asks for' : "your result is not the library's";
 }
 
 function at(line: number | null): string {

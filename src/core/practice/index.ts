@@ -14,3 +14,4 @@ export * from './solution-error.js';
 export * from './source.js';
 export * from './writes.js';
 export * from './drawable.js';
+export * from './properties.js';

@@ -6,7 +6,7 @@
 import type { HalfedgeMesh } from '../mesh.js';
 import { type ExerciseInput, frozenInput } from './exercise.js';
 import { DEFAULT_BUDGET, type PracticeBudget, type PracticeMesh, practiceMesh, type PracticeTrace } from './mesh-api.js';
-import { solutionLine } from './source.js';
+import { currentSolutionLine, solutionLine } from './source.js';
 
 export type Solution = (mesh: PracticeMesh, input: ExerciseInput | undefined) => unknown;
 
@@ -29,7 +29,7 @@ export interface RunOutput extends PracticeTrace {
  * the engine puts before the compiled body (see `solutionLine`).
  */
 export function runSolution(solution: Solution, mesh: HalfedgeMesh, input: ExerciseInput | undefined, lineOffset: number, budget: PracticeBudget = DEFAULT_BUDGET): RunOutput {
-  const lineOf = () => solutionLine(new Error().stack, lineOffset);
+  const lineOf = () => currentSolutionLine(lineOffset);
   const { api, trace } = practiceMesh(mesh, lineOf, budget);
   try {
     const value = plain(solution(Object.freeze(api), frozenInput(input)));

@@ -72,14 +72,16 @@ export default function (mesh, e) {
     mesh.deleteEdge(mesh.edge(tp));
     mesh.deleteFace(f1);
   } else {
-    mesh.setNext(tp, tn);
+    // prev(t), not tp: where f0 had a second boundary side, that side went, and t's prev with it
+    mesh.setNext(mesh.prev(t), tn);
   }
   for (const g of leavingB) mesh.setOrigin(g, a);
   mesh.deleteEdge(e);
   mesh.deleteVertex(b);
   mesh.setPosition(a, [(pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2]);
   // a's halfedge: one that still leaves it, the boundary one if it has one
-  const around = rotate(mesh, f0 !== -1 ? mesh.twin(hp) : hn);
+  // (c → a, or on the boundary side a → d: hn may have gone with an ear of f1)
+  const around = rotate(mesh, f0 !== -1 ? mesh.twin(hp) : tn);
   mesh.setVertexHalfedge(a, around.find((g) => mesh.isBoundary(g)) ?? around[0]);
   return a;
 }
