@@ -9,12 +9,37 @@ const systemChromium = ['/usr/bin/chromium', '/usr/bin/chromium-browser'].find((
 // E2E_PORT lets two checkouts run their browser tests at once, each against its own build
 const port = Number(process.env.E2E_PORT ?? 5183);
 
+/** The tests that measure time, run alone after the rest (see e2e/timed.spec.ts). */
+const timed = /timed\.spec\.ts$/;
+
+const chromium = {
+  ...devices['Desktop Chrome'],
+  viewport: { width: 1280, height: 800 },
+  launchOptions: {
+    executablePath: systemChromium,
+    args: [
+      '--no-sandbox',
+      '--disable-quic',
+      '--no-first-run',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      // WebGL in software where there is no GPU
+      '--use-angle=swiftshader',
+      '--enable-unsafe-swiftshader',
+    ],
+  },
+};
+
 export default defineConfig({
   testDir: 'e2e',
-  timeout: 60_000,
-  expect: { timeout: 15_000 },
+  // two browsers share the machine's cores, so a test may take twice as long as alone
+  timeout: 90_000,
+  expect: { timeout: 20_000 },
+  // spec files two at a time: most of a browser test's time is waiting for frames and workers,
+  // and the other browser fills it
   fullyParallel: false,
-  workers: 1,
+  workers: 2,
   retries: 0,
   reporter: [['list']],
   outputDir: 'test-results',
@@ -24,27 +49,9 @@ export default defineConfig({
     trace: 'retain-on-failure',
   },
   projects: [
-    {
-      name: 'chromium',
-      use: {
-        ...devices['Desktop Chrome'],
-        viewport: { width: 1280, height: 800 },
-        launchOptions: {
-          executablePath: systemChromium,
-          args: [
-            '--no-sandbox',
-            '--disable-quic',
-            '--no-first-run',
-            '--disable-background-networking',
-            '--disable-component-update',
-            '--disable-sync',
-            // WebGL in software where there is no GPU
-            '--use-angle=swiftshader',
-            '--enable-unsafe-swiftshader',
-          ],
-        },
-      },
-    },
+    { name: 'chromium', testIgnore: timed, use: chromium },
+    // alone: it starts once every other test is done, and is one file, so one worker
+    { name: 'timed', testMatch: timed, dependencies: ['chromium'], use: chromium },
   ],
   // the production build, served as a static host would (strict Content-Security-Policy included);
   // the <halfedge-view> element's own bundle too, which e2e/embed.spec.ts serves to a page of its own

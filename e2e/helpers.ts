@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 
 /** Opens the app (optionally on a sample model, optionally from another server) and waits for the first mesh. */
@@ -147,4 +148,18 @@ export async function askClickable(page: Page): Promise<{ answer: string; path: 
     await page.evaluate(() => window.halfedgeLab.quiz.ask());
   }
   throw new Error('no question with an answer that can be clicked');
+}
+
+/** A test solution's source (tests/practice/solutions/NAME.js). */
+export function solution(name: string): string {
+  return readFileSync(new URL(`../tests/practice/solutions/${name}.js`, import.meta.url), 'utf8');
+}
+
+/** Replaces the editor's text as a student would paste it, and runs it with the Run button. */
+export async function typeAndRun(page: Page, code: string): Promise<void> {
+  await page.locator('.practice-editor .cm-content').click();
+  await page.keyboard.press('ControlOrMeta+A');
+  await page.keyboard.press('Delete');
+  await page.keyboard.insertText(code);
+  await page.getByRole('button', { name: 'Run the solution' }).click();
 }

@@ -1,17 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
-import { appErrors, openAppAt } from './helpers';
-
-const solution = (name: string) => readFileSync(new URL(`../tests/practice/solutions/${name}.js`, import.meta.url), 'utf8');
-
-/** Replaces the editor's text as a student would paste it, and runs it with the Run button. */
-async function typeAndRun(page: Page, code: string): Promise<void> {
-  await page.locator('.practice-editor .cm-content').click();
-  await page.keyboard.press('ControlOrMeta+A');
-  await page.keyboard.press('Delete');
-  await page.keyboard.insertText(code);
-  await page.getByRole('button', { name: 'Run the solution' }).click();
-}
+import { appErrors, openAppAt, solution, typeAndRun } from './helpers';
 
 test.describe('practice mode', () => {
   test('at 1280 × 720 the view, at least 20 lines of code and the writes of a run are in sight together', async ({ page }, testInfo) => {
@@ -46,11 +35,11 @@ test.describe('practice mode', () => {
     expect(history.items[history.index - 1].source.kind).toBe('open'); // undo goes back to the mesh the page had
 
     await typeAndRun(page, solution('flip-edge'));
-    await expect(page.locator('.practice-summary')).toHaveText('All 10 checks pass.', { timeout: 15_000 });
+    await expect(page.locator('.practice-summary')).toHaveText('All 16 checks pass.', { timeout: 15_000 });
     expect(await page.evaluate(async () => (await window.halfedgeLab.practice.state()).progress['flip-edge'])).toBe(true);
 
     await typeAndRun(page, solution('wrong/flip-forgets-vertex'));
-    await expect(page.locator('.practice-summary')).toHaveText('9 of 10 checks pass.', { timeout: 15_000 });
+    await expect(page.locator('.practice-summary')).toHaveText('13 of 16 checks pass.', { timeout: 15_000 });
     const broken = page.locator('.practice-broken');
     await expect(broken).toContainText(/First broken: v\d+'s halfedge h\d+ does not start at v\d+\. It broke at write \d+, origin\(h\d+\) = v\d+, line 2[34]/);
     // the culprit vertex is selected in the view, on the mesh the code left
@@ -84,24 +73,9 @@ test.describe('practice mode', () => {
     expect(appErrors(page)).toEqual([]);
   });
 
-  test('an endless loop is stopped within 3 s while the page keeps drawing; an error names its line', async ({ page }) => {
+  test('code that allocates without bound is stopped for its memory; a query\'s reads walk in the view; an error names its line', async ({ page }) => {
     await openAppAt(page, '/?exercise=vertex-degree');
     await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
-    const frames = page.evaluate(
-      () =>
-        new Promise<number>((resolve) => {
-          let count = 0;
-          const start = performance.now();
-          const tick = () => (performance.now() - start < 2000 ? (count++, requestAnimationFrame(tick)) : resolve(count));
-          requestAnimationFrame(tick);
-        }),
-    );
-    const started = Date.now();
-    await typeAndRun(page, 'export default function (mesh, v) {\n  while (true) {}\n}\n');
-    await expect(page.locator('.practice-summary')).toHaveText('0 of 4 checks pass.', { timeout: 10_000 });
-    expect(Date.now() - started).toBeLessThan(3500);
-    expect(await frames).toBeGreaterThan(20);
-    await expect(page.locator('.practice-checks')).toContainText('your code ran for 2.5 s without returning');
     // code that allocates without bound is stopped for its memory, at its line, and the page lives on
     await page.evaluate((code) => window.halfedgeLab.practice.setCode(code), solution('wrong/allocates'));
     const allocated = await page.evaluate(() => window.halfedgeLab.practice.run());

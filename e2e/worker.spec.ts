@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { expect, test } from '@playwright/test';
-import { buildMesh, meshStats, readMesh, seededRandom, uvSphere, writeSoup } from '../src/index.js';
+import { buildMesh, meshStats, readMesh, seededRandom } from '../src/index.js';
 import type { EditRequest } from '../src/workers/protocol.js';
 import { openApp } from './helpers.js';
 
@@ -18,30 +18,6 @@ test.describe('the worker session', () => {
     }
   });
 
-  test('keeps the page drawing while a large file is parsed off the main thread', async ({ page }) => {
-    await openApp(page, 'tetrahedron.off');
-    const big = writeSoup(uvSphere(400, 800), 'ply'); // 638k triangles of ascii PLY
-    const framesBefore = await page.evaluate(() => window.halfedgeLab.state().frames);
-    await page.locator('#file-input').setInputFiles({ name: 'big-sphere.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(big) });
-    // while the loader works, the progress bar shows and the frame counter keeps moving
-    await expect(page.locator('#progress')).toBeVisible();
-    const during: number[] = [];
-    while (await page.locator('#progress').isVisible()) {
-      during.push(await page.evaluate(() => window.halfedgeLab.state().frames));
-      await page.waitForTimeout(100);
-    }
-    expect(during.length).toBeGreaterThan(2);
-    expect(during.at(-1)!).toBeGreaterThan(during[0]! + 5);
-    expect(during[0]!).toBeGreaterThan(framesBefore - 1);
-    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().stats?.faces)).toBe(2 * 800 * 399);
-    // a mesh this large is picked by the picking worker: a click in the middle finds a face
-    const box = (await page.locator('#viewport canvas').boundingBox())!;
-    const picked = await page.evaluate(([x, y]) => window.halfedgeLab.pickAt(x!, y!, 'face'), [box.width / 2, box.height / 2]);
-    expect(picked).toMatch(/^f\d+$/);
-    await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
-    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().selection)).toMatch(/^[hvf]\d+$/);
-  });
-
   test('shows a parse error with its place, and the previous mesh stays', async ({ page }) => {
     await openApp(page, 'cube.off');
     const bad = 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n';
@@ -49,17 +25,6 @@ test.describe('the worker session', () => {
     await expect(page.locator('#status')).toHaveAttribute('role', 'alert');
     await expect(page.locator('#status')).toContainText('broken.off');
     await expect(page.locator('#status')).toContainText('line 6');
-    await expect(page.locator('#status')).toContainText('previous mesh stays');
-    const state = await page.evaluate(() => window.halfedgeLab.state());
-    expect(state.file?.name).toBe('cube.off');
-    expect(state.stats?.faces).toBe(6);
-  });
-
-  test('cancels a load in progress, keeping the previous mesh', async ({ page }) => {
-    await openApp(page, 'cube.off');
-    const big = writeSoup(uvSphere(500, 1000), 'ply');
-    await page.locator('#file-input').setInputFiles({ name: 'huge.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(big) });
-    await page.getByRole('button', { name: 'Cancel' }).click();
     await expect(page.locator('#status')).toContainText('previous mesh stays');
     const state = await page.evaluate(() => window.halfedgeLab.state());
     expect(state.file?.name).toBe('cube.off');
