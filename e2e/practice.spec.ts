@@ -1,6 +1,6 @@
 import { readFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
-import { appErrors, openAppAt, solution, typeAndRun } from './helpers';
+import { appErrors, openApp, openAppAt, solution, typeAndRun } from './helpers';
 
 test.describe('practice mode', () => {
   test('at 1280 × 720 the view, at least 20 lines of code and the writes of a run are in sight together', async ({ page }, testInfo) => {
@@ -143,5 +143,49 @@ test.describe('practice mode', () => {
     await page.waitForFunction(() => window.halfedgeLab !== undefined);
     await page.evaluate(() => window.halfedgeLab.practice.load('split-edge'));
     expect(await page.evaluate(async () => (await window.halfedgeLab.practice.state()).code)).toContain('never gives them a halfedge');
+  });
+
+  test("Use my code: Operate's flip runs the student's flip on the mesh in the view; a broken result is not kept and names its line", async ({ page }, testInfo) => {
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await openApp(page, 'sphere.ply');
+    await page.evaluate(() => window.halfedgeLab.practice.load('flip-edge'));
+    // the exercise shows its first fixture; the student goes back to the model they were looking at
+    expect(await page.evaluate(() => window.halfedgeLab.openSample('sphere.ply'))).toBe(true);
+    const opened = await page.evaluate(() => window.halfedgeLab.state());
+
+    // a flip that forgets a vertex halfedge: the view keeps its mesh, the panel says where it broke
+    await page.evaluate((code) => window.halfedgeLab.practice.setCode(code), solution('wrong/flip-forgets-vertex'));
+    await page.getByRole('button', { name: 'Use my code' }).click();
+    await expect(page.getByRole('button', { name: 'Use my code' })).toHaveAttribute('aria-pressed', 'true');
+    expect(await page.evaluate(() => window.halfedgeLab.edit({ kind: 'flip-edge', edge: 10 }))).toBeNull();
+    await expect(page.locator('#status')).toHaveText(/^Your code broke the mesh \(v\d+'s halfedge h\d+ does not start at v\d+, since write \d+, origin\(h\d+\) = v\d+ at line 2[34]\); the mesh stays as it was\.$/);
+    await expect(page.locator('.practice-broken')).toContainText(/First broken: v\d+'s halfedge/);
+    let state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.lastEdit).toMatchObject({ kind: 'flip-edge', by: 'solution' });
+    expect(state.lastEdit!.writes).toBeGreaterThan(10);
+    expect(state.version).toBe(opened.version);
+    expect(state.history!.items.length).toBe(opened.history!.items.length);
+
+    // the right flip, from Operate's own button on the selected edge: kept, as an entry undo takes back
+    await page.evaluate((code) => window.halfedgeLab.practice.setCode(code), solution('flip-edge'));
+    await page.evaluate(() => window.halfedgeLab.select('e10'));
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    await page.getByRole('button', { name: 'Flip edge' }).click();
+    await expect(page.locator('#status')).toHaveText(/^Flip e10 \(your code\): \d+ writes\. Ctrl\+Z undoes it\.$/);
+    state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.lastEdit).toMatchObject({ kind: 'flip-edge', by: 'solution' });
+    expect(state.history!.items[state.history!.index]!.label).toBe('flip e10 (your code)');
+    expect(state.problems).toEqual([]);
+    expect(state.stats).toMatchObject({ vertices: opened.stats!.vertices, edges: opened.stats!.edges, faces: opened.stats!.faces });
+    expect(state.phase!.diff!.total).toBeGreaterThan(5);
+    await page.screenshot({ path: testInfo.outputPath('use-my-code-1280.png') });
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().history!.index)).toBe(opened.history!.index);
+
+    // switched off, the same button is the library's again
+    await page.evaluate(() => window.halfedgeLab.practice.setUseMine(false));
+    await page.getByRole('button', { name: 'Flip edge' }).click();
+    await expect.poll(() => page.evaluate(() => window.halfedgeLab.state().lastEdit?.by)).toBe('library');
+    expect(appErrors(page)).toEqual([]);
   });
 });

@@ -15,7 +15,7 @@
  * once (a smoothing step moves every vertex).
  */
 import type { AttributeArray } from './attributes.js';
-import type { PointerChange, PointerDiff } from './diff.js';
+import { DIFF_LISTED, type PointerChange, type PointerDiff } from './diff.js';
 import type { HalfedgeMesh, SlotState } from './mesh.js';
 import { attributeSetOf, type ElementKind, elementKinds, meshArrays, slotCount } from './mesh-arrays.js';
 
@@ -86,7 +86,7 @@ export function applyChange(mesh: HalfedgeMesh, record: ChangeRecord, direction:
 }
 
 /** The pointer fields the record changes, as `diffPointers` lists them (flags left out). */
-export function pointerDiffOf(record: ChangeRecord, limit = 10_000): PointerDiff {
+export function pointerDiffOf(record: ChangeRecord, limit = DIFF_LISTED): PointerDiff {
   const { array, index, old, new: now } = record.pointers;
   const changes: PointerChange[] = [];
   let total = 0;

@@ -20,6 +20,9 @@ export interface PointerChange {
   after: number;
 }
 
+/** How many changes a diff lists (its `total` counts them all): enough to draw, not a copy of the mesh. */
+export const DIFF_LISTED = 10_000;
+
 export interface PointerDiff {
   changes: PointerChange[];
   /** All changes found; `changes` stops at the limit. */
@@ -41,7 +44,7 @@ export function pointerCopy(mesh: HalfedgeMesh): MeshPointers {
  * element that exists on one side only counts as changing from or to -1). Deleted elements
  * count as absent. The comparison is the check of change records and of phase diffs.
  */
-export function diffPointers(before: MeshPointers, after: MeshPointers, limit = 10_000): PointerDiff {
+export function diffPointers(before: MeshPointers, after: MeshPointers, limit = DIFF_LISTED): PointerDiff {
   return compare(before, after, limit, null);
 }
 
@@ -51,7 +54,7 @@ export function diffPointers(before: MeshPointers, after: MeshPointers, limit = 
  * nothing, and one that rewires the whole mesh what it wrote. Equal to `diffPointers` of the
  * whole mesh for every phase of the stepped operations (tested).
  */
-export function phaseDiff(before: MeshPointers, after: MeshPointers, phase: Phase, limit = 10_000): PointerDiff {
+export function phaseDiff(before: MeshPointers, after: MeshPointers, phase: Phase, limit = DIFF_LISTED): PointerDiff {
   if (!phase.created && !phase.rewired && !phase.removed) return { changes: [], total: 0 };
   const marks = {
     halfedge: new Uint8Array(Math.max(slotCount(before, 'halfedge'), slotCount(after, 'halfedge'))),

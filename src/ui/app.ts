@@ -4,11 +4,13 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { type Box3, Vector3 } from 'three';
-import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
+import { DIFF_LISTED, type HalfedgeMesh, type PointerDiff, type SerializedMesh, serializeMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
 import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
+import { type EditRequest, type SolutionCall, solutionCall } from '../workers/operations.js';
 import { PICK_IN_WORKER_ABOVE, type RenderPatch, type StudentVerb, type VerbArguments } from '../workers/protocol.js';
+import { pointerChangeOf } from '../core/practice/writes.js';
 import { byId, capitalized, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, quizHighlight } from './highlights.js';
 import { boundaryLoopList, incidentBounds, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
@@ -94,6 +96,8 @@ export class App {
   showIds = false;
   /** The last message shown to the student (an error, a walk that led nowhere…). */
   message = '';
+  /** The last edit (or operation the student's code did): its kind, whose code made it, and how many pointer writes. */
+  lastEdit: { kind: string; by: 'solution' | 'library'; writes: number } | null = null;
   /** Files, samples and opening them again. */
   readonly opening: Opening;
   /** Resolves when the first mesh is on screen. */
@@ -117,6 +121,8 @@ export class App {
   readonly quiz: QuizPanel;
   /** The Practice tab, loaded with its editor and grader when first asked for (see `practice()`). */
   private practicePanel: Promise<PracticePanel> | null = null;
+  /** The Practice panel once loaded: "Use my code" is read from it as a request comes. */
+  private practiceLoaded: PracticePanel | null = null;
   /** Whether the camera was last framed on the whole mesh (not on a selection): see `show`. */
   private framedWhole = false;
   /** Frames again what was framed last, the same way (presentation mode changes the view's size). */
@@ -284,7 +290,7 @@ export class App {
       },
       say: (message: string, role?: 'status' | 'alert') => this.say(message, role),
     };
-    this.practicePanel ??= import('./panels/practice.js').then(({ PracticePanel }) => new PracticePanel(this.byId('practice'), actions));
+    this.practicePanel ??= import('./panels/practice.js').then(({ PracticePanel }) => (this.practiceLoaded = new PracticePanel(this.byId('practice'), actions)));
     return this.practicePanel;
   }
 
@@ -309,20 +315,60 @@ export class App {
    * answer; after undo, redo or a jump, says where in the history the view now is.
    */
   request<V extends StudentVerb>(verb: V, ...args: VerbArguments<V>): Promise<Snapshot | null> {
+    const mine = this.solutionCallFor(verb, args[0]);
+    if (mine) return this.solutionEdit(mine.panel, mine.call, mine.kind);
     const ask = () => (this.client[verb] as (...args: unknown[]) => Promise<Snapshot | null>)(...args);
     if (verb === 'undo' || verb === 'redo' || verb === 'jump') return this.moveInHistory(ask);
-    return verb === 'edit' ? this.edit(ask) : this.run(ask);
+    return verb === 'edit' ? this.edit(ask, (args[0] as EditRequest).kind) : this.run(ask);
   }
 
   /** An edit, saying what it did and how many pointers it wrote (else the status line would still say how the file opened). */
-  private async edit(action: () => Promise<Snapshot | null>): Promise<Snapshot | null> {
+  private async edit(action: () => Promise<Snapshot | null>, kind: string): Promise<Snapshot | null> {
     const snapshot = await this.run(action);
     if (snapshot) {
       const { label } = snapshot.history.items[snapshot.history.index]!;
       const total = snapshot.diff?.total;
       const written = total === undefined ? '' : `: ${total} pointer${total === 1 ? '' : 's'} changed`;
+      this.lastEdit = { kind, by: 'library', writes: total ?? 0 };
       this.say(`${capitalized(label)}${written}. Ctrl+Z undoes it.`);
     }
+    return snapshot;
+  }
+
+  /**
+   * With "Use my code" on in Practice, the exercise's solution for an edit or operation that is
+   * the loaded exercise's (see `solutionCall`); null otherwise, and for a request no exercise sets.
+   */
+  private solutionCallFor(verb: StudentVerb, request: unknown): { panel: PracticePanel; call: SolutionCall; kind: string } | null {
+    const panel = this.practiceLoaded;
+    if (!panel?.useMine || !this.mesh || (verb !== 'edit' && verb !== 'start')) return null;
+    let call: SolutionCall | null;
+    try {
+      call = solutionCall(this.mesh, { verb, request } as Parameters<typeof solutionCall>[1]);
+    } catch {
+      return null; // an edit there is none of: the session refuses it by name
+    }
+    return call?.exercise === panel.exercise.id ? { panel, call, kind: (request as { kind: string }).kind } : null;
+  }
+
+  /**
+   * Runs the student's solution on the mesh in the view, in the sandbox, instead of the library's
+   * edit; a valid result becomes the current mesh (an entry undo takes back), a broken one is not
+   * kept and the Practice panel shows where it broke, as for a fixture.
+   */
+  private async solutionEdit(panel: PracticePanel, call: SolutionCall, kind: string): Promise<Snapshot | null> {
+    const mesh = this.mesh!;
+    const run = await panel.runOnView(mesh, call.input, call.label);
+    this.lastEdit = { kind, by: 'solution', writes: run.writes.length };
+    if (!run.mesh) {
+      this.say(run.message, 'alert');
+      return null;
+    }
+    const changes = run.writes.map(pointerChangeOf).filter((change) => change !== null);
+    const diff = { total: changes.length, changes: changes.slice(0, DIFF_LISTED) };
+    const label = `${call.label} (your code)`;
+    const snapshot = await this.run(() => this.client.solution(serializeMesh(run.mesh!), label, diff, call.exercise));
+    if (snapshot) this.say(`${capitalized(label)}: ${run.writes.length} write${run.writes.length === 1 ? '' : 's'}. ${run.message ? `${run.message} ` : ''}Ctrl+Z undoes it.`);
     return snapshot;
   }
 

@@ -112,7 +112,9 @@ export function automation(app: App) {
      * `setCode(text)` puts a solution in the editor, `run()` runs it on every fixture and resolves
      * to `{ passed, checks, writes, firstBroken, fixtures, error }`; `show(fixture, n)` shows a
      * fixture after its first n writes, `showRead(fixture, n)` a query's fixture with its reads up
-     * to read n marked; `state()` is what the panel shows.
+     * to read n marked; `state()` is what the panel shows. `setUseMine(on)` is the "Use my code"
+     * switch: while on, `edit()` or `start()` of the loaded exercise's operation (and its button)
+     * runs the solution on the mesh in the view (see `state().lastEdit`).
      */
     practice: {
       list: async () => (await app.practice()).exercises.map((e) => e.id),
@@ -128,6 +130,7 @@ export function automation(app: App) {
         panel.setCode(text);
       },
       run: async () => (await app.practice()).run(),
+      setUseMine: async (on: boolean) => (await app.practice()).setUseMine(on),
       show: async (fixture: number, writes: number) => (await app.practice()).show(fixture, writes),
       showRead: async (fixture: number, read: number) => (await app.practice()).showRead(fixture, read),
       state: async () => (await app.practice()).state(),
@@ -165,6 +168,11 @@ export function automation(app: App) {
       history: app.snapshot?.history ?? null,
       version: app.snapshot?.version ?? 0,
       frames: app.viewer.frames,
+      /**
+       * The last edit: its kind, whose code made it (`solution` with "Use my code" on, else
+       * `library`) and its pointer writes (a solution's writes; the library's pointers changed).
+       */
+      lastEdit: app.lastEdit,
       /** When the last snapshot arrived and when the view was last drawn (performance.now()). */
       shownAt: app.shown.at,
       drawnAt: app.viewer.lastDrawAt,

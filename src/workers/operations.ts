@@ -43,7 +43,8 @@ import {
 import { type KeepSide, planeCut } from '../core/cut/index.js';
 import { cannotDecimate, type DecimationOptions, decimation } from '../core/decimation/index.js';
 import { type HalfedgeMesh, type Operation, TopologyError } from '../core/index.js';
-import { cannotRemesh, remeshing, type RemeshingOptions } from '../core/remeshing/index.js';
+import type { ExerciseInput } from '../core/practice/exercise.js';
+import { cannotRemesh, meanEdgeLength, remeshing, type RemeshingOptions } from '../core/remeshing/index.js';
 import { cannotSmooth, smoothing, type SmoothingOptions } from '../core/smoothing/index.js';
 import { cannotSubdivide, type SubdivisionScheme, subdivisionOperation } from '../core/subdivision/index.js';
 
@@ -162,57 +163,142 @@ export function startOperation(mesh: HalfedgeMesh, request: OperationRequest): {
 /** How far a bevel's new corners go along their edges when a request does not say: far enough to see the new face. */
 const BEVEL_AMOUNT = 0.25;
 
-/** Each edit in one place: why it does not apply (null: it does), what it does, and its history label. */
+/**
+ * The Practice exercise whose solution does what a request asks, and the input the solution is
+ * called with: the numbers the library's edit would use, defaults included. With "Use my code" on,
+ * the app runs the student's solution instead of the library's function (docs/practice.md).
+ */
+export interface SolutionCall {
+  exercise: string;
+  input: ExerciseInput | undefined;
+  /** What the history calls the request (`flip e10`, `Loop subdivision`). */
+  label: string;
+}
+
+/** Each edit in one place: why it does not apply (null: it does), what it does, its history label, and its exercise. */
 interface EditDefinition<R extends EditRequest> {
   cannot(mesh: HalfedgeMesh, request: R): string | null;
   apply(mesh: HalfedgeMesh, request: R): EditResult;
   label(request: R): string;
+  /** The exercise that practises this edit (none for the edits no exercise sets). */
+  solution?(mesh: HalfedgeMesh, request: R): Omit<SolutionCall, 'label'> | null;
 }
 
 type EditDefinitions = { [K in EditKind]: EditDefinition<Extract<EditRequest, { kind: K }>> };
 
 const editDefinitions: EditDefinitions = {
-  'flip-edge': { cannot: (m, r) => canFlipEdge(m, r.edge), apply: (m, r) => flipEdge(m, r.edge), label: (r) => `flip e${r.edge}` },
+  'flip-edge': { cannot: (m, r) => canFlipEdge(m, r.edge), apply: (m, r) => flipEdge(m, r.edge), label: (r) => `flip e${r.edge}`, solution: (_, r) => call('flip-edge', r.edge) },
   'split-edge': {
     cannot: (m, r) => (r.triangulate ? canSplitEdgeTriangulated(m, r.edge) : canSplitEdge(m, r.edge)),
     apply: (m, r) => (r.triangulate ? splitEdgeTriangulated(m, r.edge) : splitEdge(m, r.edge)),
     label: (r) => (r.triangulate ? `split e${r.edge} (and its triangles)` : `split e${r.edge}`),
+    // the exercise splits the triangles too
+    solution: (_, r) => (r.triangulate ? call('split-edge', r.edge) : null),
   },
-  'collapse-edge': { cannot: (m, r) => canCollapseEdge(m, r.edge), apply: (m, r) => collapseEdge(m, r.edge), label: (r) => `collapse e${r.edge}` },
+  'collapse-edge': {
+    cannot: (m, r) => canCollapseEdge(m, r.edge),
+    apply: (m, r) => collapseEdge(m, r.edge),
+    label: (r) => `collapse e${r.edge}`,
+    solution: (_, r) => call('collapse-edge', r.edge),
+  },
   'split-face': {
     cannot: (m, r) => canSplitFace(m, r.face, r.from, r.to),
     apply: (m, r) => splitFace(m, r.face, r.from, r.to),
     label: (r) => `split f${r.face} from v${r.from} to v${r.to}`,
   },
-  'poke-face': { cannot: (m, r) => canPokeFace(m, r.face), apply: (m, r) => pokeFace(m, r.face), label: (r) => `poke f${r.face}` },
+  'poke-face': { cannot: (m, r) => canPokeFace(m, r.face), apply: (m, r) => pokeFace(m, r.face), label: (r) => `poke f${r.face}`, solution: (_, r) => call('inset-vertex', r.face) },
   'erase-edge': { cannot: (m, r) => canMergeFaces(m, r.edge), apply: (m, r) => mergeFaces(m, r.edge), label: (r) => `erase e${r.edge}` },
   'triangulate-face': { cannot: (m, r) => canTriangulateFace(m, r.face), apply: (m, r) => triangulateFace(m, r.face), label: (r) => `triangulate f${r.face}` },
-  'triangulate-mesh': { cannot: (m) => (m.nFaces === 0 ? 'there are no faces to triangulate' : null), apply: (m) => triangulateMesh(m), label: () => 'triangulate every face' },
+  'triangulate-mesh': {
+    cannot: (m) => (m.nFaces === 0 ? 'there are no faces to triangulate' : null),
+    apply: (m) => triangulateMesh(m),
+    label: () => 'triangulate every face',
+    solution: () => call('triangulate', undefined),
+  },
   'extrude-face': {
     cannot: (m, r) => canExtrudeFace(m, r.face, extrudePlacement(m, r)),
     apply: (m, r) => extrudeFace(m, r.face, extrudePlacement(m, r)),
     label: (r) => `extrude f${r.face}`,
+    solution: (m, r) => call('extrude-face', { face: r.face, ...extrudePlacement(m, r) }),
   },
   'bevel-vertex': {
     cannot: (m, r) => canBevelVertex(m, r.vertex, r.amount ?? BEVEL_AMOUNT),
     apply: (m, r) => bevelVertex(m, r.vertex, { amount: r.amount ?? BEVEL_AMOUNT }),
     label: (r) => `bevel v${r.vertex}`,
+    solution: (_, r) => call('bevel-vertex', { vertex: r.vertex, amount: r.amount ?? BEVEL_AMOUNT }),
   },
   'bevel-edge': {
     cannot: (m, r) => canBevelEdge(m, r.edge, r.amount ?? BEVEL_AMOUNT),
     apply: (m, r) => bevelEdge(m, r.edge, { amount: r.amount ?? BEVEL_AMOUNT }),
     label: (r) => `bevel e${r.edge}`,
+    solution: (_, r) => call('bevel-edge', { edge: r.edge, amount: r.amount ?? BEVEL_AMOUNT }),
   },
-  'dissolve-vertex': { cannot: (m, r) => canDissolveVertex(m, r.vertex), apply: (m, r) => dissolveVertex(m, r.vertex), label: (r) => `dissolve v${r.vertex}` },
-  'dissolve-edge': { cannot: (m, r) => canDissolveEdge(m, r.edge), apply: (m, r) => dissolveEdge(m, r.edge), label: (r) => `dissolve e${r.edge}` },
-  'collapse-face': { cannot: (m, r) => canCollapseFace(m, r.face), apply: (m, r) => collapseFace(m, r.face), label: (r) => `collapse f${r.face}` },
-  'make-boundary': { cannot: (m, r) => canMakeBoundary(m, r.face), apply: (m, r) => makeBoundary(m, r.face), label: (r) => `make f${r.face} a hole` },
+  'dissolve-vertex': {
+    cannot: (m, r) => canDissolveVertex(m, r.vertex),
+    apply: (m, r) => dissolveVertex(m, r.vertex),
+    label: (r) => `dissolve v${r.vertex}`,
+    solution: (_, r) => call('dissolve-vertex', r.vertex),
+  },
+  'dissolve-edge': {
+    cannot: (m, r) => canDissolveEdge(m, r.edge),
+    apply: (m, r) => dissolveEdge(m, r.edge),
+    label: (r) => `dissolve e${r.edge}`,
+    solution: (_, r) => call('dissolve-edge', r.edge),
+  },
+  'collapse-face': {
+    cannot: (m, r) => canCollapseFace(m, r.face),
+    apply: (m, r) => collapseFace(m, r.face),
+    label: (r) => `collapse f${r.face}`,
+    solution: (_, r) => call('collapse-face', r.face),
+  },
+  'make-boundary': {
+    cannot: (m, r) => canMakeBoundary(m, r.face),
+    apply: (m, r) => makeBoundary(m, r.face),
+    label: (r) => `make f${r.face} a hole`,
+    solution: (_, r) => call('make-boundary', r.face),
+  },
   'weld-edges': {
     cannot: (m, r) => (Array.isArray(r.edges) && r.edges.length === 2 ? canWeldEdges(m, r.edges[0], r.edges[1]) : 'a weld needs two boundary edges: edges: [e1, e2]'),
     apply: (m, r) => weldEdges(m, r.edges[0], r.edges[1]),
     label: (r) => `weld e${r.edges[0]} and e${r.edges[1]}`,
+    solution: (_, r) => call('weld-edges', [r.edges[0], r.edges[1]]),
   },
 };
+
+function call(exercise: string, input: ExerciseInput | undefined): Omit<SolutionCall, 'label'> {
+  return { exercise, input };
+}
+
+/**
+ * The exercise whose solution does what `request` asks, and its input (see `SolutionCall`); null
+ * for a request no exercise sets (a cut, smoothing, a face split, another subdivision scheme).
+ */
+export function solutionCall(mesh: HalfedgeMesh, request: { verb: 'edit'; request: EditRequest } | { verb: 'start'; request: OperationRequest }): SolutionCall | null {
+  if (request.verb === 'edit') {
+    const definition = definitionOf(request.request);
+    const found = definition.solution?.(mesh, request.request);
+    return found ? { ...found, label: definition.label(request.request) } : null;
+  }
+  const found = operationExercise(mesh, request.request);
+  return found && { ...found, label: operationLabel(request.request) };
+}
+
+function operationExercise(mesh: HalfedgeMesh, operation: OperationRequest): Omit<SolutionCall, 'label'> | null {
+  switch (operation.kind) {
+    case 'subdivide': {
+      const exercises: Partial<Record<SubdivisionScheme, string>> = { loop: 'loop-subdivision', 'catmull-clark': 'catmull-clark', linear: 'linear-subdivision' };
+      const exercise = exercises[operation.scheme];
+      return exercise ? call(exercise, undefined) : null;
+    }
+    case 'remesh':
+      return call('isotropic-remesh', { targetEdgeLength: operation.options.targetEdgeLength ?? meanEdgeLength(mesh), iterations: operation.options.iterations ?? 3 });
+    case 'decimate':
+      // the exercise's target is a face count: decimation's default, half the faces
+      return operation.options.maxError === undefined ? call('simplify', { faces: operation.options.targetFaces ?? Math.floor(mesh.nFaces / 2) }) : null;
+    default:
+      return null;
+  }
+}
 
 /** The extrusion a request asks for; without an offset, half the face's mean side along its normal, so the new quads show. */
 function extrudePlacement(mesh: HalfedgeMesh, request: Extract<EditRequest, { kind: 'extrude-face' }>): { offset: number; inset: number } {

@@ -147,7 +147,9 @@ export type HistorySource =
   | { kind: 'edit'; request: EditRequest }
   | { kind: 'restore' }
   /** A state of a practice run: a fixture after some of a solution's writes (it may break invariants). */
-  | { kind: 'practice' };
+  | { kind: 'practice' }
+  /** An edit or operation the student's own solution made on the mesh in the view ("Use my code"): no link can replay it. */
+  | { kind: 'solution'; exercise: string };
 
 /** The operation being stepped, if any. */
 export interface SteppingState {
@@ -252,6 +254,8 @@ export const snapshotVerbs = {
   restore: takes<[mesh: SerializedMesh, label: string]>(),
   /** Shows a state of a practice run, with the write that led to it as the diff; replaces the practice state shown before. */
   practice: takes<[mesh: SerializedMesh, label: string, diff: PointerDiff | null]>(),
+  /** Makes the mesh a student's solution left (valid: the page checked it) the current mesh, an entry undo takes back. */
+  solution: takes<[mesh: SerializedMesh, label: string, diff: PointerDiff | null, exercise: string]>(),
   /** The current snapshot, with the whole mesh. */
   snapshot: takes<[]>(),
 };

@@ -130,6 +130,17 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     return this.send(null, -1);
   }
 
+  /**
+   * Makes the mesh a student's solution left the current mesh ("Use my code"): an entry of its
+   * own, which undo takes back like an edit. The page has checked it is valid.
+   */
+  solution(serialized: SerializedMesh, label: string, diff: PointerDiff | null, exercise: string): Snapshot {
+    this.abandonStepping();
+    this.history.pushMesh(label, deserializeMesh(serialized), { source: { kind: 'solution', exercise }, report: null, file: null, phase: null, diff });
+    this.state++;
+    return this.send(null, -1);
+  }
+
   /** Starts stepping an operation (on a copy, or in place when it only moves vertices); nothing changes until `step`. */
   start(request: OperationRequest): Snapshot {
     const current = this.currentMesh();

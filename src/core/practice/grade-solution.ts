@@ -34,7 +34,19 @@ export interface GradeReport {
 }
 
 export async function gradeSolution(exercise: Exercise, source: string, run: SolutionRunner, files?: ReadonlyMap<string, Uint8Array>): Promise<GradeReport> {
-  const meshes = exercise.fixtures.map((fixture) => fixtureMesh(fixture, files));
+  return gradeOn(exercise, exercise.fixtures.map((fixture) => fixtureMesh(fixture, files)), source, run);
+}
+
+/**
+ * Grades `source` on a mesh that is no fixture of the exercise (the mesh in the app's view, when
+ * the student's code does the app's edits: "Use my code"), as a fixture that is shown is graded.
+ */
+export function gradeOnMesh(exercise: Exercise, source: string, run: SolutionRunner, mesh: HalfedgeMesh, input: ExerciseInput | undefined, name: string): Promise<GradeReport> {
+  return gradeOn({ ...exercise, fixtures: [{ name, input }] }, [mesh], source, run);
+}
+
+/** Grades `source` on the exercise's fixtures, whose meshes are `meshes` (not changed). */
+async function gradeOn(exercise: Exercise, meshes: HalfedgeMesh[], source: string, run: SolutionRunner): Promise<GradeReport> {
   // each run gets its own copy of the input, so that code which changes it changes nothing else
   const runsOf = () => meshes.map((mesh, i) => ({ mesh, input: frozenInput(exercise.fixtures[i].input) }));
   const outputs = await run(source, runsOf());

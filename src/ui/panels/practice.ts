@@ -4,12 +4,12 @@
  * (with its write and line), and every write it made, each of which can be shown in the view.
  * Code and progress are kept in the browser per exercise; "Export" saves all solutions as one file.
  */
-import { type PointerDiff, type SerializedMesh, serializeMesh } from '../../core/index.js';
+import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, serializeMesh } from '../../core/index.js';
 // module by module: the index would bring the solution parser, which only the sandbox needs
 import { describeInput, type Exercise, type ExerciseInput, fixtureMesh } from '../../core/practice/exercise.js';
 import { exercises } from '../../core/practice/exercises.js';
 import { type CheckStatus, type FirstBroken, PARTIAL_CREDIT } from '../../core/practice/grade.js';
-import { type GradeReport, gradeSolution } from '../../core/practice/grade-solution.js';
+import { type GradeReport, gradeOnMesh, gradeSolution } from '../../core/practice/grade-solution.js';
 import { whyNotDrawable } from '../../core/practice/drawable.js';
 import { MAX_VISITS, PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
 import { SolutionError } from '../../core/practice/solution-error.js';
@@ -52,6 +52,17 @@ export interface PracticeRunResult {
   error: { message: string; line: number | null } | null;
 }
 
+/**
+ * What the student's code did to the mesh in the view ("Use my code"): `mesh` is what it left when
+ * that is a valid mesh the app takes as the new current one, null when nothing is to change (it
+ * could not run, broke an invariant, or refused); `message` says which, for the status line.
+ */
+export interface SolutionOnView {
+  mesh: HalfedgeMesh | null;
+  writes: PracticeWrite[];
+  message: string;
+}
+
 /** Writes listed in the panel (all of them can still be stepped through with the buttons). */
 const WRITES_LISTED = 400;
 /** How fast Play walks a query's reads: a face loop of six halfedges plays in about two seconds. */
@@ -92,6 +103,12 @@ export class PracticePanel {
   private readonly hintButton = el('button', { type: 'button', onclick: () => this.showHint() }, 'Hint');
   private readonly editorHost = el('div', { class: 'practice-editor' });
   private readonly runButton = el('button', { type: 'button', class: 'primary', 'aria-label': 'Run the solution', 'aria-keyshortcuts': 'Control+Enter', title: 'Run on every fixture (Ctrl+Enter)', onclick: () => void this.run() }, 'Run');
+  /**
+   * "Use my code": while on, the app's own button for this exercise's operation (and `edit()` or
+   * `start()` of it) runs this code on the mesh in the view instead of the library's function.
+   */
+  useMine = false;
+  private readonly useMineButton = el('button', { type: 'button', 'aria-pressed': 'false', onclick: () => this.setUseMine(!this.useMine) }, 'Use my code');
   private readonly summary = el('p', { class: 'practice-summary', role: 'status', 'aria-live': 'polite' });
   private readonly checks = el('ul', { class: 'practice-checks' });
   private readonly broken = el('div', { class: 'practice-broken' });
@@ -117,6 +134,7 @@ export class PracticePanel {
           this.runButton,
           el('button', { type: 'button', 'aria-label': 'Start again from the starter code', onclick: () => this.setCode(this.exercise.starter) }, 'Starter code'),
           el('button', { type: 'button', 'aria-label': 'Export all solutions as one file', onclick: () => this.exportSolutions() }, 'Export'),
+          this.useMineButton,
         ),
       ),
       el('div', { class: 'practice-results' }, this.summary, this.checks, this.broken, this.writes, this.reads),
@@ -150,6 +168,7 @@ export class PracticePanel {
     this.hintsShown = 0;
     this.code = savedFor(exercise)?.code ?? exercise.starter;
     this.editor?.setText(this.code);
+    this.drawUseMine();
     this.drawList();
     if (this.editor) void this.showFirstFixture();
     replace(this.task, el('h3', {}, exercise.title), ...exercise.task.map((p) => el('p', {}, p)));
@@ -160,6 +179,59 @@ export class PracticePanel {
     replace(this.broken);
     replace(this.writes);
     replace(this.reads);
+  }
+
+  /** Turns "Use my code" on or off (an exercise that only answers questions has no operation to take over). */
+  setUseMine(on: boolean): void {
+    this.useMine = on && this.exercise.kind === 'edit';
+    this.drawUseMine();
+    if (on && !this.useMine) this.actions.say(`${this.exercise.title} changes nothing in the view: only an edit's code can do the app's operation.`, 'alert');
+    else this.actions.say(this.useMine ? `Your ${this.exercise.title.toLowerCase()} code now does the app's own ${this.exercise.title.toLowerCase()}, on the mesh in the view.` : "The app's own operations are back.");
+  }
+
+  private drawUseMine(): void {
+    if (this.exercise.kind !== 'edit') this.useMine = false;
+    this.useMineButton.setAttribute('aria-pressed', String(this.useMine));
+    this.useMineButton.disabled = this.exercise.kind !== 'edit';
+    this.useMineButton.title =
+      this.exercise.kind === 'edit'
+        ? `While pressed, Operate's ${this.exercise.title.toLowerCase()} runs your code on the mesh in the view; a result that breaks the mesh is not kept`
+        : 'A query changes nothing: only an edit exercise can do the app\'s operation';
+  }
+
+  /**
+   * Runs the code on the mesh in the view with `input` (what the app's own edit would use), and
+   * shows the run as a fixture's: its checks (a valid mesh; the same as the library's), the first
+   * broken write, the writes. The mesh is not changed: what the code left is returned, for the
+   * app to make current when it is valid (it need not be the library's: the student's code rules).
+   */
+  async runOnView(mesh: HalfedgeMesh, input: ExerciseInput | undefined, label: string): Promise<SolutionOnView> {
+    this.stopReads();
+    this.summary.textContent = `Running your code: ${label}…`;
+    let report: GradeReport;
+    try {
+      report = await gradeOnMesh(this.exercise, this.code, browserRunner, mesh, input, 'the mesh in the view');
+    } catch (error) {
+      if (!(error instanceof SolutionError)) throw error;
+      this.summary.textContent = `The code cannot run: ${error.message}`;
+      replace(this.broken, lineButton(error.line, (line) => this.goToLine(line)));
+      return { mesh: null, writes: [], message: `Your code cannot run: ${error.message}. The mesh stays as it was.` };
+    }
+    this.report = report;
+    this.shown = null;
+    const [valid, outcome] = report.checks;
+    const result = report.fixtures[0];
+    this.summary.textContent = `Your code on the mesh in the view (${label}): ${valid.passed ? 'a valid mesh' : 'the mesh is broken'}${outcome.passed ? ", the library's result" : ''}.`;
+    this.drawChecks(report);
+    this.drawBroken(result.firstBroken, 0);
+    this.drawWrites(0);
+    const refusal = this.exercise.refusal;
+    if (!valid.passed) return { mesh: null, writes: result.writes, message: `Your code broke the mesh (${valid.message.replace(/^the mesh it leaves breaks an invariant: /, '')}); the mesh stays as it was.` };
+    if (result.writes.length === 0) {
+      const refused = refusal !== undefined ? ` (it returned ${String(refusal)})` : '';
+      return { mesh: null, writes: [], message: `Your code changed nothing${refused}: ${label} stays undone.` };
+    }
+    return { mesh: result.after, writes: result.writes, message: outcome.passed ? '' : `It differs from the library's: ${outcome.message}.` };
   }
 
   /** Loads the editor (once) and shows the exercise's first fixture, when the tab is opened. */
@@ -329,6 +401,7 @@ export class PracticePanel {
       shown: this.shown,
       read: this.read && { ...this.read, total: this.report?.fixtures[this.read.fixture].visits.length ?? 0, playing: this.readTimer !== null },
       progress: Object.fromEntries(this.exercises.map((e) => [e.id, saved(e.id)?.passed ?? false])),
+      useMine: this.useMine,
     };
   }
 
