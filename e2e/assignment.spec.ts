@@ -35,6 +35,45 @@ test.describe("the assignment's local operations in Operate", () => {
     expect(appErrors(page)).toEqual([]);
   });
 
+  test('an extrusion dragged in the view: up pulls the face further out, in one history entry; a click keeps it', async ({ page }, testInfo) => {
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await openApp(page, 'cube.off');
+    await page.getByRole('tab', { name: 'Operate' }).click();
+    await page.evaluate(() => window.halfedgeLab.select('f2'));
+    await page.locator('[data-edit="extrude-face"]').click();
+    await expect.poll(async () => (await stats(page)).faces).toBe(10);
+    await expect(page.locator('#status')).toContainText('Drag up or down in the view to set its offset');
+    const first = (await page.evaluate(() => window.halfedgeLab.state().adjusting))!;
+    expect(first).toMatchObject({ kind: 'extrude-face', field: 'offset' });
+    const entries = (await page.evaluate(() => window.halfedgeLab.state().history!.items.length));
+    // the mesh's extent: the face goes further out
+    const extent = async () => {
+      const { min, max } = (await stats(page)).boundingBox!;
+      return Math.max(...max.map((m, i) => m - min[i]!));
+    };
+    const before = await extent();
+    const box = (await page.locator('#viewport canvas').boundingBox())!;
+    const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let dy = 10; dy <= 60; dy += 10) await page.mouse.move(x, y - dy);
+    await page.mouse.up();
+    await expect.poll(async () => (await page.evaluate(() => window.halfedgeLab.state().adjusting))?.value).toBeCloseTo(first.value * 1.6, 5);
+    const state = await page.evaluate(() => window.halfedgeLab.state());
+    expect(state.history!.items.length).toBe(entries);
+    expect(state.history!.items[state.history!.index]!.label).toBe('extrude f2');
+    expect(state.stats!.faces).toBe(10);
+    expect(state.problems).toEqual([]);
+    await expect.poll(extent).toBeGreaterThan(before + 0.5 * first.value);
+    await page.screenshot({ path: testInfo.outputPath('extrude-dragged.png') });
+    // a click keeps it: the next drag turns the camera again
+    await page.mouse.click(box.x + 20, box.y + box.height - 20);
+    expect(await page.evaluate(() => window.halfedgeLab.state().adjusting)).toBeNull();
+    await page.keyboard.press('Control+z');
+    await expect.poll(async () => (await stats(page)).faces).toBe(6);
+    expect(appErrors(page)).toEqual([]);
+  });
+
   test('welds in two steps: the first boundary edge, then the second, rolling a strip into a ring', async ({ page }) => {
     await openApp(page, 'disk.off');
     await page.locator('#file-input').setInputFiles({ name: 'strip.off', mimeType: 'text/plain', buffer: Buffer.from(writeSoup(grid(3, 1, true), 'off')) });

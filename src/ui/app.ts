@@ -41,6 +41,7 @@ import { Inspection } from './inspection.js';
 import { repairStory } from './repair-story.js';
 import { ViewDetail } from './view-detail.js';
 import { cutPlaneOnShow, explodedMesh, explodedRender, explodeOffsets } from './explode.js';
+import { adjustable, DragAdjust } from './drag-adjust.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, openedEntry, type ReplayStep, replayable, type ViewState } from './share.js';
@@ -98,6 +99,11 @@ export class App {
   message = '';
   /** The last edit (or operation the student's code did): its kind, whose code made it, and how many pointer writes. */
   lastEdit: { kind: string; by: 'solution' | 'library'; writes: number } | null = null;
+  /** After an extrusion or a bevel, a drag on the view sets its offset or amount (see drag-adjust.ts). */
+  readonly adjust = new DragAdjust(
+    (request) => this.editAgain(request),
+    (message) => this.say(message),
+  );
   /** Files, samples and opening them again. */
   readonly opening: Opening;
   /** Resolves when the first mesh is on screen. */
@@ -315,11 +321,50 @@ export class App {
    * answer; after undo, redo or a jump, says where in the history the view now is.
    */
   request<V extends StudentVerb>(verb: V, ...args: VerbArguments<V>): Promise<Snapshot | null> {
+    this.adjust.end();
+    if (verb === 'edit') return this.editOrDrag(args[0] as EditRequest);
     const mine = this.solutionCallFor(verb, args[0]);
     if (mine) return this.solutionEdit(mine.panel, mine.call, mine.kind);
     const ask = () => (this.client[verb] as (...args: unknown[]) => Promise<Snapshot | null>)(...args);
     if (verb === 'undo' || verb === 'redo' || verb === 'jump') return this.moveInHistory(ask);
-    return verb === 'edit' ? this.edit(ask, (args[0] as EditRequest).kind) : this.run(ask);
+    return this.run(ask);
+  }
+
+  /** An edit (the library's, or the student's with "Use my code"); after an extrusion or a bevel, a drag on the view sets how far it goes. */
+  private async editOrDrag(request: EditRequest): Promise<Snapshot | null> {
+    const used = this.numbersOf(request);
+    const snapshot = await this.editOnce(request);
+    const target = snapshot ? adjustable(request, used) : null;
+    if (target) {
+      this.adjust.offer(target);
+      this.say(`${this.message.replace(/ Ctrl\+Z undoes it\.$/, '')} Drag up or down in the view to set its ${target.field}; Ctrl+Z undoes it.`);
+    }
+    return snapshot;
+  }
+
+  private editOnce(request: EditRequest): Promise<Snapshot | null> {
+    const mine = this.solutionCallFor('edit', request);
+    return mine ? this.solutionEdit(mine.panel, mine.call, mine.kind) : this.edit(() => this.client.edit(request), request.kind);
+  }
+
+  /** The numbers an edit is made with, its defaults written out (a bevel's amount, an extrusion's offset); null for none or a kind there is none of. */
+  private numbersOf(request: EditRequest): { readonly [name: string]: number } | null {
+    try {
+      const input = this.mesh && solutionCall(this.mesh, { verb: 'edit', request })?.input;
+      return input && typeof input === 'object' && !Array.isArray(input) ? (input as { readonly [name: string]: number }) : null;
+    } catch {
+      return null;
+    }
+  }
+
+  /** A drag's step: the last edit taken back and made again with `request`; when that does not apply, the edit before is put back. */
+  private async editAgain(request: EditRequest): Promise<boolean> {
+    await this.run(() => this.client.undo());
+    if (await this.editOnce(request)) return true;
+    const why = this.message;
+    await this.run(() => this.client.redo());
+    this.say(why, 'alert');
+    return false;
   }
 
   /** An edit, saying what it did and how many pointers it wrote (else the status line would still say how the file opened). */
@@ -876,6 +921,7 @@ export class App {
 
   /** A click on the canvas: answers the quiz when it is waiting, selects otherwise. */
   async click(x: number, y: number): Promise<void> {
+    this.adjust.end();
     const question = this.quiz.active ? this.quiz.question : null;
     const picked = await this.pickAt(x, y, question ? question.answer.kind : this.filter);
     if (question) {

@@ -173,6 +173,8 @@ export function automation(app: App) {
        * `library`) and its pointer writes (a solution's writes; the library's pointers changed).
        */
       lastEdit: app.lastEdit,
+      /** After an extrusion or a bevel: the number a drag on the view sets (`offset` or `amount`) and its value; null otherwise. */
+      adjusting: app.adjust.target && { kind: app.adjust.target.request.kind, field: app.adjust.target.field, value: app.adjust.target.value },
       /** When the last snapshot arrived and when the view was last drawn (performance.now()). */
       shownAt: app.shown.at,
       drawnAt: app.viewer.lastDrawAt,

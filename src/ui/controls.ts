@@ -88,15 +88,27 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
     await app.opening.openFiles([...(event.dataTransfer?.files ?? [])]);
   });
 
-  // a click picks; a drag orbits
+  // a click picks; a drag orbits, or, just after an extrusion or a bevel, sets how far it goes
+  // (heard first, in the capture phase, so that the camera's own controls do not start turning)
   let down: { x: number; y: number } | null = null;
-  canvas.addEventListener('pointerdown', (event) => (down = { x: event.offsetX, y: event.offsetY }));
+  canvas.addEventListener(
+    'pointerdown',
+    (event) => {
+      down = { x: event.offsetX, y: event.offsetY };
+      if (app.adjust.down(event.offsetY)) app.viewer.controls.enabled = false;
+    },
+    { capture: true },
+  );
   canvas.addEventListener('pointerup', (event) => {
+    app.adjust.up();
+    app.viewer.controls.enabled = true;
     if (down && Math.hypot(event.offsetX - down.x, event.offsetY - down.y) < 5) void app.click(event.offsetX, event.offsetY);
     down = null;
   });
   let hoverPending = false;
   canvas.addEventListener('pointermove', (event) => {
+    // a few pixels' wobble is still a click, which keeps the edit as it is
+    if (down && event.buttons !== 0 && Math.abs(event.offsetY - down.y) >= 5) app.adjust.move(event.offsetY);
     // no hover preview until picking is quick (a big mesh's hierarchy is still being built)
     if (hoverPending || event.buttons !== 0 || !quickToPick()) return;
     hoverPending = true;
@@ -111,6 +123,7 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
     // the element pressed on, inside an embed's shadow root too (where event.target is the embed)
     const origin = event.composedPath()[0];
     if (origin instanceof Element && origin.closest(FIELDS)) return;
+    app.adjust.end();
     if (!handleKey(app, event)) return;
     event.preventDefault();
     // a key this view used is not also the slide deck's around it (N is "next slide" in reveal.js)
