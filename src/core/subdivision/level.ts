@@ -103,7 +103,8 @@ export function* levelPhases(mesh: HalfedgeMesh, level: SchemeLevel, listIds: bo
   const steps = level.phases.flatMap((phase) => ('topology' in phase ? [phase.topology] : []));
   const handed = handOver(helper, mesh, level.scheme, V, steps);
 
-  // compute the new positions while the old one-rings are intact
+  // compute the new positions while the old one-rings are intact: face points, edge points (where
+  // they end, unless they wait for a phase of their own while stepping), old vertices
   const attributes = blendedAttributes(mesh);
   if (level.facePoints) for (const a of attributes) level.facePoints(old, a.data, a.data, V);
   const edgePointsWait = listIds && level.phases.some((phase) => 'moves' in phase && phase.moves === 'edge points');
@@ -112,6 +113,7 @@ export function* levelPhases(mesh: HalfedgeMesh, level: SchemeLevel, listIds: bo
   const vertexPoints = level.vertexPoints ? attributes.map((a) => level.vertexPoints!(old, a.data)) : [];
   const step = handed.take(listIds);
 
+  // the phases, in order: change the topology, or store the points a phase moves
   let topologySteps = 0;
   for (const phase of level.phases) {
     const { name, explanation } = phase;
