@@ -69,11 +69,9 @@
 import type { HalfedgeMesh } from '../mesh.js';
 import { zeros } from '../memory.js';
 import type { Operation } from '../operation.js';
-import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
-import { addScaled, blendedAttributes, storeValues } from './stencil.js';
-import { growForLevel, handOver } from './helper-thread.js';
-import { loopSteps } from './loop.js';
-import { range } from './topology.js';
+import { levelOperation, type SchemeLevel } from './level.js';
+import { cutEveryCorner, loopLevel, splitEveryEdge } from './loop.js';
+import { addScaled } from './stencil.js';
 
 /**
  * One level of Modified Butterfly subdivision, as a steppable operation that edits `mesh` in place.
@@ -81,60 +79,46 @@ import { range } from './topology.js';
  * @throws TopologyError when a face is not a triangle (nothing is changed).
  */
 export function butterflySubdivision(mesh: HalfedgeMesh): Operation {
-  requireApplicable(mesh, 'butterfly');
-  compactAtOnce(mesh);
-  return butterflyLevel(mesh, true);
+  return levelOperation(mesh, butterflyLevel);
 }
 
-/** The phases of one level; `listIds` false leaves the phases' id lists out (a run straight through). */
-export function* butterflyLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
-  startLevel(mesh);
-  const V = mesh.vertexSlots;
-  const E = mesh.edgeSlots;
-  const F = mesh.faceSlots;
+/** A level of Butterfly subdivision, for `level.ts` to run: Loop's topology, the edge points by the butterfly stencil. */
+export const butterflyLevel: SchemeLevel = {
+  scheme: 'butterfly',
+  counts: loopLevel.counts,
+  edgePoints: butterflyEdgePoints,
+  phases: [
+    {
+      name: 'split every edge',
+      explanation:
+        'Each edge gets a new vertex at its midpoint, so every triangle becomes a hexagon whose corners alternate between old and new vertices. ' +
+        'Butterfly refines the mesh exactly as Loop does; only where the new points go differs.',
+      topology: splitEveryEdge,
+    },
+    {
+      name: 'cut the corners',
+      explanation:
+        'Three new edges join the edge points of each face, cutting off its corners: one triangle becomes four. ' +
+        'The surface is still the old flat one, with every old vertex where it was.',
+      topology: cutEveryCorner,
+    },
+    {
+      name: 'place the edge points',
+      explanation:
+        'Each edge point moves by the butterfly stencil: 1/2 of the edge’s ends, 1/8 of the two facing corners and ' +
+        '−1/16 of the four wing vertices (other weights near vertices without six neighbours and next to the boundary, which is refined by a four-point rule of its own). ' +
+        'The old vertices never move, so every level passes through the points of the level before: the scheme interpolates.',
+      moves: 'edge points',
+    },
+  ],
+};
 
-  // reserve memory; straight through, a helper thread (when there is one) does Loop's topology
-  // steps in the new arrays while this one works out the edge points from the old ones
-  const { helper, old } = growForLevel(mesh, listIds, { vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
-  const handed = handOver(helper, mesh, 'loop', V);
-
-  // compute the edge points while the old one-rings are intact
-  const attributes = blendedAttributes(mesh);
-  const edgePoints = attributes.map((a) => butterflyEdgePoints(old, a.data));
-  const step = handed.take(loopSteps, listIds);
-
-  // split edges
-  yield {
-    name: 'split every edge',
-    explanation:
-      'Each edge gets a new vertex at its midpoint, so every triangle becomes a hexagon whose corners alternate between old and new vertices. ' +
-      'Butterfly refines the mesh exactly as Loop does; only where the new points go differs.',
-    ...step(0),
-  };
-
-  // split faces
-  yield {
-    name: 'cut the corners',
-    explanation:
-      'Three new edges join the edge points of each face, cutting off its corners: one triangle becomes four. ' +
-      'The surface is still the old flat one, with every old vertex where it was.',
-    ...step(1),
-  };
-
-  // place the new vertices
-  storeValues(attributes, edgePoints, V);
-  yield {
-    name: 'place the edge points',
-    explanation:
-      'Each edge point moves by the butterfly stencil: 1/2 of the edge’s ends, 1/8 of the two facing corners and ' +
-      '−1/16 of the four wing vertices (other weights near vertices without six neighbours and next to the boundary, which is refined by a four-point rule of its own). ' +
-      'The old vertices never move, so every level passes through the points of the level before: the scheme interpolates.',
-    moved: { vertices: range(listIds, V, V + E) },
-  };
-}
-
-/** The new point of each edge e, three numbers per edge, in edge order. */
-function butterflyEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64Array {
+/**
+ * The new point of each edge e, three numbers per edge, written to `points` as the values of
+ * vertex `first + e`. The rules add up their terms in `out`, zeros in doubles of its own, so an
+ * attribute of 32-bit floats is rounded once.
+ */
+function butterflyEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>, points: Float64Array | Float32Array, first: number): void {
   const { heNext, hePrev, heVertex, heFace, vHalfedge } = mesh;
   const E = mesh.edgeSlots;
   const out = zeros(Float64Array, 3 * E);
@@ -294,7 +278,7 @@ function butterflyEdgePoints(mesh: HalfedgeMesh, x: ArrayLike<number>): Float64A
       endStencil(t, 1 / 2);
     }
   }
-  return out;
+  points.set(out, 3 * first);
 }
 
 const weightsByValence: Float64Array[] = [];

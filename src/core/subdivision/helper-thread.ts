@@ -16,26 +16,18 @@ import { attributeSetOf, elementKinds, meshArrays, type SlotCounts } from '../me
 import type { HalfedgeMesh, MeshCapacity } from '../mesh.js';
 import { isShared, type Memory } from '../memory.js';
 import { type SerializedMesh, shareMesh } from '../serialize.js';
-import { joinSharedFan } from './shared-fan.js';
+import type { TopologyStep } from './level.js';
+import type { SubdivisionScheme } from './preconditions.js';
 import type { TopologyChange } from './topology.js';
 
-/** The schemes whose topology steps a helper can run (see `topology-task.ts`); Butterfly hands over Loop's. */
-export type HelpedScheme = 'loop' | 'catmull-clark';
-
-/**
- * One of a scheme's topology steps: `oldVertices` is the vertex count when the level began;
- * `fanWork`, on the helper, the state of a step it shares with the calling thread (`shared-fan.ts`).
- */
-export type TopologyStep = (mesh: HalfedgeMesh, listIds: boolean, oldVertices: number, fanWork?: Int32Array) => TopologyChange;
-
-/** A level's topology steps, on the mesh's own arrays in shared memory. */
+/** A level's topology steps (those of its scheme's phases, see `topology-task.ts`), on the mesh's own arrays in shared memory. */
 export interface TopologyTask {
-  scheme: HelpedScheme;
+  scheme: SubdivisionScheme;
   /** The vertex count when the level began. */
   oldVertices: number;
   mesh: SerializedMesh;
-  /** The state of the connecting of face points, which the calling thread joins (`shared-fan.ts`). */
-  fanWork?: Int32Array;
+  /** The state of the step the calling thread joins in, when one is shared (`TopologyStep.share`). */
+  work?: Int32Array;
 }
 
 export interface HelperThread {
@@ -66,10 +58,10 @@ export interface HelperRun {
 export interface HandedSteps {
   /**
    * Once the stencils are done: when the helper has begun the steps, waits for them (joining it in
-   * connecting the face points, when it shares that) and takes the slot counts they left, and each
-   * step then lists nothing; when it has not, they are called off, and each runs here.
+   * the step it shares, if any) and takes the slot counts they left, and each step then lists
+   * nothing; when it has not, they are called off, and each runs here.
    */
-  take(steps: readonly TopologyStep[], listIds: boolean): (i: number) => TopologyChange;
+  take(listIds: boolean): (i: number) => TopologyChange;
 }
 
 /** What a step the helper did reports: nothing, as a level run straight through lists no ids. */
@@ -97,28 +89,28 @@ export function growForLevel(mesh: HalfedgeMesh, listIds: boolean, capacity: Mes
 }
 
 /**
- * Hands the level's remaining topology steps to the helper, when every array they write is in its
- * memory (an array that already had room was not grown into it). `shareFan`, given, makes the
- * state of the connecting of face points that both threads share, in the helper's memory: only
- * when the steps are handed over.
+ * Hands the level's topology steps to the helper, when every array they write is in its memory
+ * (an array that already had room was not grown into it). A step the two threads share has its
+ * state made now, in the helper's memory: only when the steps are handed over.
  */
 export function handOver(
   run: HelperRun | null,
   mesh: HalfedgeMesh,
-  scheme: HelpedScheme,
+  scheme: SubdivisionScheme,
   oldVertices: number,
-  shareFan?: (mesh: HalfedgeMesh, memory: Memory) => Int32Array,
+  steps: readonly TopologyStep[],
 ): HandedSteps {
-  let fanWork: Int32Array | undefined;
+  const shared = steps.find((step) => step.share !== undefined)?.share;
+  let work: Int32Array | undefined;
   if (run !== null && sharesEveryArray(mesh)) {
-    fanWork = shareFan?.(mesh, run.memory);
-    run.post({ scheme, oldVertices, mesh: shareMesh(mesh), fanWork });
+    work = shared?.work(mesh, run.memory);
+    run.post({ scheme, oldVertices, mesh: shareMesh(mesh), work });
   }
   return {
-    take(steps, listIds) {
+    take(listIds) {
       const helped = run?.begun() ?? false;
       if (helped) {
-        if (fanWork !== undefined) joinSharedFan(mesh, oldVertices, fanWork);
+        if (work !== undefined) shared!.join(mesh, oldVertices, work);
         const slots = run!.join();
         mesh.vertexSlots = slots.vertexSlots;
         mesh.edgeSlots = slots.edgeSlots;

@@ -15,8 +15,10 @@
  * Each scheme is a steppable operation (see `operation.ts`): one run is one level, done in
  * phases that each leave a valid mesh, named and explained for a student, with the ids of what
  * they created, moved and rewired. Topology and positions are separate phases, so a student sees
- * first how the connectivity is refined, then where the new points go. The shared phases (split
- * every edge, cut the corners, insert face points) live in `topology.ts`.
+ * first how the connectivity is refined, then where the new points go. The shared topology (split
+ * every edge, cut the corners, insert face points) lives in `topology.ts`; Loop, Butterfly,
+ * Catmull-Clark and linear subdivision describe their level as data (counts, stencils, phases),
+ * which `level.ts` runs.
  *
  * Attributes: vertex attributes of three floats that interpolate linearly (positions, normals,
  * float colours) follow the same stencils as positions; other vertex attributes (labels, integer
@@ -35,6 +37,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
 import { butterflyLevel, butterflySubdivision } from './butterfly.js';
 import { catmullClark, catmullClarkLevel } from './catmull-clark.js';
+import { levelPhases } from './level.js';
 import { linearLevel, linearSubdivision } from './linear.js';
 import { loopLevel, loopSubdivision } from './loop.js';
 import { requireApplicable, type SubdivisionScheme, unknownScheme } from './preconditions.js';
@@ -72,12 +75,12 @@ export function subdivisionOperation(mesh: HalfedgeMesh, scheme: SubdivisionSche
 }
 
 /** Each scheme's phases, with or without their id lists. */
-const levelPhases: Record<SubdivisionScheme, (mesh: HalfedgeMesh, listIds: boolean, level: number) => Operation> = {
-  loop: loopLevel,
-  'catmull-clark': catmullClarkLevel,
-  butterfly: butterflyLevel,
+const phasesOf: Record<SubdivisionScheme, (mesh: HalfedgeMesh, listIds: boolean, level: number) => Operation> = {
+  loop: (mesh, listIds) => levelPhases(mesh, loopLevel, listIds),
+  'catmull-clark': (mesh, listIds) => levelPhases(mesh, catmullClarkLevel, listIds),
+  butterfly: (mesh, listIds) => levelPhases(mesh, butterflyLevel, listIds),
   sqrt3: sqrt3Level,
-  linear: linearLevel,
+  linear: (mesh, listIds) => levelPhases(mesh, linearLevel, listIds),
 };
 
 /**
@@ -88,13 +91,13 @@ const levelPhases: Record<SubdivisionScheme, (mesh: HalfedgeMesh, listIds: boole
  * @throws InvalidInputError when `levels` is not a whole number ≥ 0 or the scheme is unknown.
  */
 export function subdivide(mesh: HalfedgeMesh, scheme: SubdivisionScheme, levels = 1): void {
-  if (!Object.hasOwn(levelPhases, scheme)) unknownScheme(scheme);
+  if (!Object.hasOwn(phasesOf, scheme)) unknownScheme(scheme);
   if (!Number.isInteger(levels) || levels < 0) {
     throw new InvalidInputError(`subdivide: levels must be a whole number ≥ 0, not ${levels}`);
   }
   for (let level = 0; level < levels; level++) {
     requireApplicable(mesh, scheme);
-    const phases = levelPhases[scheme](mesh, false, level);
+    const phases = phasesOf[scheme](mesh, false, level);
     while (!phases.next().done) {
       // straight through: the phases matter only when stepping
     }

@@ -19,41 +19,46 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
-import { quadLevel, type QuadRule } from './catmull-clark.js';
-import { compactAtOnce } from './preconditions.js';
+import { addFacePointsPhase, catmullClarkLevel, connectFacePointsPhase, splitAtEdgePoints } from './catmull-clark.js';
+import { levelOperation, type SchemeLevel } from './level.js';
 
 /**
  * One level of linear subdivision, as a steppable operation that edits `mesh` in place.
  * @example runOperation(linearSubdivision(mesh)); // every face a quad, the shape unchanged
  */
 export function linearSubdivision(mesh: HalfedgeMesh): Operation {
-  compactAtOnce(mesh);
-  return linearLevel(mesh, true);
+  return levelOperation(mesh, linearLevel);
 }
 
-/** The phases of one level; `listIds` false leaves the phases' id lists out (a run straight through). */
-export function linearLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
-  return quadLevel(mesh, listIds, linearRule);
-}
-
-const linearRule: QuadRule = {
-  placeEdgePoints: placeMidpoints,
-  splitExplanation:
-    'Each edge gets a new vertex at its midpoint: linear subdivision averages, it does not smooth. ' +
-    'Every face now has twice as many sides, its corners alternating between old vertices and edge points.',
-  vertexPoints: null,
-  moveExplanation: '',
+/** A level of linear subdivision, for `level.ts` to run: Catmull-Clark's face points and topology, edge midpoints. */
+export const linearLevel: SchemeLevel = {
+  scheme: 'linear',
+  counts: catmullClarkLevel.counts,
+  facePoints: catmullClarkLevel.facePoints,
+  edgePoints: edgeMidpoints,
+  phases: [
+    addFacePointsPhase,
+    {
+      name: 'split every edge at its edge point',
+      explanation:
+        'Each edge gets a new vertex at its midpoint: linear subdivision averages, it does not smooth. ' +
+        'Every face now has twice as many sides, its corners alternating between old vertices and edge points.',
+      topology: splitAtEdgePoints,
+    },
+    connectFacePointsPhase,
+  ],
 };
 
-/** Puts the point of each edge e (vertex `firstEdgePoint + e`) at the edge's midpoint. */
-function placeMidpoints(mesh: HalfedgeMesh, x: Float64Array | Float32Array, E: number, _firstFacePoint: number, firstEdgePoint: number): void {
+/** Puts the point of each edge e at the edge's midpoint, written to `out` as the values of vertex `first + e`. */
+function edgeMidpoints(mesh: HalfedgeMesh, x: ArrayLike<number>, out: Float64Array | Float32Array, first: number): void {
   const { heVertex } = mesh;
+  const E = mesh.edgeSlots;
   for (let e = 0; e < E; e++) {
     const a = 3 * heVertex[2 * e];
     const b = 3 * heVertex[2 * e + 1];
-    const m = 3 * (firstEdgePoint + e);
-    x[m] = (x[a] + x[b]) / 2;
-    x[m + 1] = (x[a + 1] + x[b + 1]) / 2;
-    x[m + 2] = (x[a + 2] + x[b + 2]) / 2;
+    const m = 3 * (first + e);
+    out[m] = (x[a] + x[b]) / 2;
+    out[m + 1] = (x[a + 1] + x[b + 1]) / 2;
+    out[m + 2] = (x[a + 2] + x[b + 2]) / 2;
   }
 }

@@ -21,10 +21,9 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Operation } from '../operation.js';
-import { growForLevel, handOver, type TopologyStep } from './helper-thread.js';
-import { cutCorners, range, splitEdges } from './topology.js';
-import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
-import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from './stencil.js';
+import { levelOperation, type SchemeLevel, type TopologyStep } from './level.js';
+import { moveOldVertices, neighbourSums } from './stencil.js';
+import { cutCorners, splitEdges } from './topology.js';
 
 /**
  * One level of Loop subdivision, as a steppable operation that edits `mesh` in place.
@@ -32,77 +31,54 @@ import { blendedAttributes, moveOldVertices, neighbourSums, storeValues } from '
  * @throws TopologyError when a face is not a triangle (nothing is changed).
  */
 export function loopSubdivision(mesh: HalfedgeMesh): Operation {
-  requireApplicable(mesh, 'loop');
-  compactAtOnce(mesh);
-  return loopLevel(mesh, true);
+  return levelOperation(mesh, loopLevel);
 }
 
-/** The phases of one level; `listIds` false leaves the phases' id lists out (a run straight through). */
-export function* loopLevel(mesh: HalfedgeMesh, listIds: boolean): Operation {
-  startLevel(mesh);
-  const V = mesh.vertexSlots;
-  const E = mesh.edgeSlots;
-  const F = mesh.faceSlots;
+/**
+ * Loop's topology, which Butterfly shares: split every edge in two (run straight through, the
+ * edge points are already where they end, see `level.ts`), then cut the corners.
+ */
+export const splitEveryEdge: TopologyStep = (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, !listIds);
+export const cutEveryCorner: TopologyStep = (mesh, listIds) => cutCorners(mesh, listIds);
 
-  // reserve memory; straight through, a helper thread (when there is one) does the topology steps
-  // in the new arrays while this one works out the new positions from the old ones
-  const { helper, old } = growForLevel(mesh, listIds, { vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F });
-  const handed = handOver(helper, mesh, 'loop', V);
-
-  // compute the new positions while the old one-rings are intact. Straight through, no phase shows
-  // the edge points at the midpoints first: they go where they end (vertex V + e for edge e), as
-  // the stencil reads old vertices only
-  const attributes = blendedAttributes(mesh);
-  const edgePoints = listIds ? attributes.map(() => new Float64Array(3 * E)) : null;
-  attributes.forEach((a, i) => loopEdgePoints(old, a.data, edgePoints?.[i] ?? a.data, edgePoints ? 0 : V));
-  const vertexPoints = attributes.map((a) => loopVertexPoints(old, a.data));
-  const step = handed.take(loopSteps, listIds);
-
-  // split edges
-  yield {
-    name: 'split every edge',
-    explanation:
-      'Each edge gets a new vertex at its midpoint, so every triangle becomes a hexagon whose corners alternate between old and new vertices. ' +
-      'A halfedge mesh allows faces of any degree, so the mesh is still valid between the two steps of the refinement.',
-    ...step(0),
-  };
-
-  // split faces
-  yield {
-    name: 'cut the corners',
-    explanation:
-      'Three new edges join the edge points of each face, cutting off its corners: one triangle becomes four similar ones. ' +
-      'The mesh now has its final connectivity, but every point still sits on the old, flat triangles.',
-    ...step(1),
-  };
-
-  // place the new (odd) vertices
-  if (edgePoints) storeValues(attributes, edgePoints, V);
-  yield {
-    name: 'place the edge points',
-    explanation:
-      'Each edge point moves to 3/8 of the edge’s two ends plus 1/8 of the two corners facing the edge ' +
-      '(on the boundary it stays at the midpoint). ' +
-      'The weights come from the box spline that a regular triangle mesh converges to, and they use the old positions only.',
-    moved: { vertices: range(listIds, V, V + E) },
-  };
-
-  // move the old (even) vertices
-  storeValues(attributes, vertexPoints, 0);
-  yield {
-    name: 'move the old vertices',
-    explanation:
-      'Each old vertex moves towards the average of its old neighbours, by Loop’s weight β that depends only on how many neighbours it has. ' +
-      'Boundary vertices follow the boundary curve instead (3/4 of themselves, 1/8 of each boundary neighbour), so an open surface keeps its rim.',
-    moved: { vertices: range(listIds, 0, V) },
-  };
-}
-
-/** The topology of a level, step by step: split every edge, cut the corners. */
-export const loopSteps: readonly TopologyStep[] = [
-  (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, !listIds),
-  (mesh, listIds) => cutCorners(mesh, listIds),
-];
+/** A level of Loop subdivision, for `level.ts` to run: reserve, edge points, vertex points, split. */
+export const loopLevel: SchemeLevel = {
+  scheme: 'loop',
+  counts: (V, E, F) => ({ vertices: V + E, edges: 2 * E + 3 * F, faces: 4 * F }),
+  edgePoints: loopEdgePoints,
+  vertexPoints: loopVertexPoints,
+  phases: [
+    {
+      name: 'split every edge',
+      explanation:
+        'Each edge gets a new vertex at its midpoint, so every triangle becomes a hexagon whose corners alternate between old and new vertices. ' +
+        'A halfedge mesh allows faces of any degree, so the mesh is still valid between the two steps of the refinement.',
+      topology: splitEveryEdge,
+    },
+    {
+      name: 'cut the corners',
+      explanation:
+        'Three new edges join the edge points of each face, cutting off its corners: one triangle becomes four similar ones. ' +
+        'The mesh now has its final connectivity, but every point still sits on the old, flat triangles.',
+      topology: cutEveryCorner,
+    },
+    {
+      name: 'place the edge points',
+      explanation:
+        'Each edge point moves to 3/8 of the edge’s two ends plus 1/8 of the two corners facing the edge ' +
+        '(on the boundary it stays at the midpoint). ' +
+        'The weights come from the box spline that a regular triangle mesh converges to, and they use the old positions only.',
+      moves: 'edge points',
+    },
+    {
+      name: 'move the old vertices',
+      explanation:
+        'Each old vertex moves towards the average of its old neighbours, by Loop’s weight β that depends only on how many neighbours it has. ' +
+        'Boundary vertices follow the boundary curve instead (3/4 of themselves, 1/8 of each boundary neighbour), so an open surface keeps its rim.',
+      moves: 'old vertices',
+    },
+  ],
+};
 
 /**
  * The odd stencil: the new point of each edge e, three numbers per edge, written to `out` as the

@@ -11,7 +11,8 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Memory } from '../memory.js';
-import { appendSlots, fanRange } from './topology.js';
+import { noIds } from './helper-thread.js';
+import { appendSlots, fanFaces, fanRange, type TopologyChange } from './topology.js';
 
 /** Faces per chunk: a chunk takes a millisecond or two, so the threads finish close together. */
 const CHUNK_BITS = 14;
@@ -37,12 +38,24 @@ const chunksOf = (faces: number) => (faces + CHUNK - 1) >> CHUNK_BITS;
 const STRIDE = 2;
 
 /**
+ * Catmull-Clark's step that connects every face point (vertex `firstCentre + f`) to the edge
+ * points around its face, after the split: `fanFaces` on one thread, or, given the state shared
+ * with the calling thread, the helper's part.
+ */
+export function connectFacePoints(mesh: HalfedgeMesh, listIds: boolean, firstCentre: number, work?: Int32Array): TopologyChange {
+  if (work === undefined) return fanFaces(mesh, 'all', firstCentre, STRIDE, listIds);
+  prepareSharedFan(mesh, firstCentre, work);
+  return noIds;
+}
+connectFacePoints.share = { work: sharedFanWork, join: joinSharedFan };
+
+/**
  * The shared state for fanning the faces of `mesh`, in `memory`, with each chunk's first spoke
  * counted now, before the sides are split: a face of n corners is split into 2n sides and joined
  * to its point by n spokes. One pass over the halfedges, on this thread, whose code is warm, where
  * the helper, started afresh for each level, would run it cold.
  */
-export function sharedFanWork(mesh: HalfedgeMesh, memory: Memory): Int32Array {
+function sharedFanWork(mesh: HalfedgeMesh, memory: Memory): Int32Array {
   const faces = mesh.faceSlots;
   const chunks = chunksOf(faces);
   const work = new Int32Array(memory(4 * (SPOKES + chunks + 1)));
@@ -62,7 +75,7 @@ export function sharedFanWork(mesh: HalfedgeMesh, memory: Memory): Int32Array {
  * fans chunks, and waits until every chunk is done. Says FAILED if it throws, so the other thread
  * does not wait for it.
  */
-export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): void {
+function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): void {
   try {
     const faces = work[FACES];
     const spokes = work[SPOKES + chunksOf(faces)];
@@ -85,7 +98,7 @@ export function prepareSharedFan(mesh: HalfedgeMesh, firstCentre: number, work: 
  * The calling thread's part, once the helper has begun: waits until the slots are appended, then
  * fans chunks until none is left. False when the helper failed first (its error comes with `join`).
  */
-export function joinSharedFan(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): boolean {
+function joinSharedFan(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): boolean {
   while (Atomics.load(work, STATE) === PREPARING) Atomics.wait(work, STATE, PREPARING);
   if (Atomics.load(work, STATE) === FAILED) return false;
   fanChunks(mesh, firstCentre, work);

@@ -94,6 +94,45 @@ export function neighbourSums(
 }
 
 /**
+ * The face point stencil: the mean of the corners of the i-th listed face (or of face i, for
+ * every face), written to `out` as the values of vertex `first + i`. Only corners numbered below
+ * `oldVertices` count (√3's triangles on the boundary have new ones by then).
+ */
+export function faceCentroids(
+  mesh: HalfedgeMesh,
+  faces: Int32Array | 'all',
+  x: ArrayLike<number>,
+  out: Float64Array | Float32Array,
+  first: number,
+  oldVertices = Infinity,
+): void {
+  const count = faces === 'all' ? mesh.faceSlots : faces.length;
+  const { heNext, heVertex, fHalfedge } = mesh;
+  for (let i = 0; i < count; i++) {
+    const start = fHalfedge[faces === 'all' ? i : faces[i]];
+    let sumX = 0;
+    let sumY = 0;
+    let sumZ = 0;
+    let degree = 0;
+    let h = start;
+    do {
+      if (heVertex[h] < oldVertices) {
+        const v = 3 * heVertex[h];
+        sumX += x[v];
+        sumY += x[v + 1];
+        sumZ += x[v + 2];
+        degree++;
+      }
+      h = heNext[h];
+    } while (h !== start);
+    const o = 3 * (first + i);
+    out[o] = sumX / degree;
+    out[o + 1] = sumY / degree;
+    out[o + 2] = sumZ / degree;
+  }
+}
+
+/**
  * The boundary rule of Loop and Catmull-Clark for an old vertex `v` on the boundary, written to
  * `out[3v …]`: 3/4 of itself and 1/8 of each neighbour along the boundary, the cubic B-spline of
  * the boundary polygon, so the boundary of the limit surface depends on the boundary alone and two

@@ -24,7 +24,7 @@
 import type { AttributeArray } from '../attributes.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { type ElementIds, idRange } from '../operation.js';
-import { isBlended } from './stencil.js';
+import { faceCentroids, isBlended } from './stencil.js';
 
 /** The ids a topology step reports: what it added, and which existing elements it re-linked. */
 export interface TopologyChange {
@@ -286,61 +286,25 @@ export function cutCorners(mesh: HalfedgeMesh, listIds: boolean): TopologyChange
  * Adds one vertex per listed face (or every face, in id order) at the mean of its corners (vertex
  * `V + i` for the i-th face), not yet joined to anything: an isolated vertex, which a valid mesh
  * may hold. Only corners numbered below `oldVertices` count: a face whose sides this level has
- * already split keeps the centre of the face it was.
+ * already split keeps the centre of the face it was. A blended attribute (see `stencil.ts`) is
+ * left alone when `blendedInPlace` says the caller has already written it there (`faceCentroids`);
+ * the others take the value of the face's first corner.
  */
-export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', listIds: boolean, oldVertices = Infinity): TopologyChange {
-  const count = faces === 'all' ? mesh.faceSlots : faces.length;
-  const V = addFacePointSlots(mesh, count);
-  placeFacePoints(mesh, faces, V, oldVertices);
-  return { created: { vertices: range(listIds, V, V + count) }, rewired: {} };
-}
-
-/** Appends `count` isolated vertices, the slots of face points; returns the first. */
-export function addFacePointSlots(mesh: HalfedgeMesh, count: number): number {
-  const { vertex: V } = appendSlots(mesh, count, 0, 0);
-  mesh.vHalfedge.fill(-1, V, V + count);
-  return V;
-}
-
-/**
- * Gives vertex `first + i` the attributes of the i-th listed face's point: the mean of its corners
- * (those below `oldVertices`) for a blended attribute, its first corner's value for a copied one.
- * `mesh` may be a view of the old arrays (`HalfedgeMesh.view`) while another thread rewires the
- * new ones: its face loops are walked, its attribute sets (the mesh's own) written.
- */
-export function placeFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', first: number, oldVertices = Infinity): void {
+export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', listIds: boolean, oldVertices = Infinity, blendedInPlace = false): TopologyChange {
   const count = faces === 'all' ? mesh.faceSlots : faces.length;
   const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
-  const { heNext, heVertex, fHalfedge } = mesh;
+  const { vertex: V } = appendSlots(mesh, count, 0, 0);
+  mesh.vHalfedge.fill(-1, V, V + count);
+  const { heVertex, fHalfedge } = mesh;
   for (const attribute of mesh.vertexAttributes) {
-    const { data, itemSize: n } = attribute;
-    if (!isBlended(attribute)) {
-      for (let i = 0; i < count; i++) copyItem(data, n, first + i, heVertex[fHalfedge[faceAt(i)]]);
+    if (isBlended(attribute)) {
+      if (!blendedInPlace) faceCentroids(mesh, faces, attribute.data, attribute.data, V, oldVertices);
       continue;
     }
-    for (let i = 0; i < count; i++) {
-      const start = fHalfedge[faceAt(i)];
-      let x = 0;
-      let y = 0;
-      let z = 0;
-      let degree = 0;
-      let h = start;
-      do {
-        if (heVertex[h] < oldVertices) {
-          const v = 3 * heVertex[h];
-          x += data[v];
-          y += data[v + 1];
-          z += data[v + 2];
-          degree++;
-        }
-        h = heNext[h];
-      } while (h !== start);
-      const o = 3 * (first + i);
-      data[o] = x / degree;
-      data[o + 1] = y / degree;
-      data[o + 2] = z / degree;
-    }
+    const { data, itemSize: n } = attribute;
+    for (let i = 0; i < count; i++) copyItem(data, n, V + i, heVertex[fHalfedge[faceAt(i)]]);
   }
+  return { created: { vertices: range(listIds, V, V + count) }, rewired: {} };
 }
 
 /**
