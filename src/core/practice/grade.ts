@@ -2,7 +2,8 @@
  * Grading one fixture from what the sandbox reported: the writes are replayed onto a copy of the
  * fixture (so nothing the solution did inside the sandbox is trusted but its log), the result is
  * validated and compared with the reference's, and when it is broken, the write after which the
- * first of its broken invariants began to fail is found by validating after every write.
+ * first of its broken invariants began to fail is found (`brokenSince`, which re-runs after each
+ * write only the checks that read what it wrote, so it is found at any size).
  *
  * ```
  *   writes:      w0   w1   w2   w3   w4   (end)
@@ -17,10 +18,11 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import { validate, type Violation } from '../validate.js';
+import { brokenSince } from './broken-since.js';
 import { compareAnswers, compareMeshes, compareTriangulation } from './compare.js';
 import type { Exercise, Fixture } from './exercise.js';
 import type { RunOutput } from './run.js';
-import { applyWrite, describeWrite, type PracticeWrite, replayWrites } from './writes.js';
+import { describeWrite, type PracticeWrite, replayWrites } from './writes.js';
 
 /**
  * `partial`: a hidden fixture (a hard case) the library handles, which the solution refused
@@ -81,9 +83,6 @@ export const FIXTURE_CHECKS = { query: ['answer'], edit: ['valid mesh', 'same as
 export function checkNames(exercise: Exercise): string[] {
   return exercise.fixtures.flatMap((fixture) => FIXTURE_CHECKS[exercise.kind].map((what) => `${fixture.name}: ${what}`));
 }
-
-/** Above this many validations' worth of work (writes × halfedges), the first broken write is not searched. */
-const MAX_TRACE_WORK = 20_000_000;
 
 /**
  * The checks of one fixture. `before` is the fixture's mesh (not changed); `reference` is what the
@@ -184,35 +183,20 @@ function describeBroken(problems: Violation[], first: FirstBroken | null, output
   return `the mesh it leaves breaks an invariant: ${first.invariant}, since write ${first.write + 1}, ${describeWrite(write)}${first.line === null ? '' : ` at line ${first.line}`}${more}`;
 }
 
-function keyOf(v: Violation): string {
-  return `${v.invariant}|${v.halfedges ?? ''}|${v.vertices ?? ''}|${v.faces ?? ''}`;
-}
-
 /**
- * Replays the writes on a copy of `before`, validating after each, and returns the write after
- * which the earliest of the `final` violations began its last unbroken stretch of failing. Null
- * when the work would be too large (the fixture is big and the writes many).
+ * The write after which the earliest of the `final` violations began its last unbroken stretch of
+ * failing (the first of them, in `validate`'s order, among those that began at the same write).
+ * `final` is not empty. Null when one of them was failing before the first write (or there are none).
  */
 export function findFirstBroken(before: HalfedgeMesh, writes: readonly PracticeWrite[], final: Violation[]): FirstBroken | null {
-  if (writes.length === 0 || writes.length * before.halfedgeSlots > MAX_TRACE_WORK) return null;
-  const finalByKey = new Map(final.map((v) => [keyOf(v), v]));
-  const onset = new Map<string, number>();
-  let failing = new Set<string>(validate(before).map(keyOf).filter((k) => finalByKey.has(k)));
-  for (const key of failing) onset.set(key, -1);
-  const mesh = before.clone();
-  writes.forEach((write, i) => {
-    applyWrite(mesh, write);
-    const now = new Set(validate(mesh).map(keyOf).filter((k) => finalByKey.has(k)));
-    for (const key of now) if (!failing.has(key)) onset.set(key, i);
-    failing = now;
-  });
-  let best: [string, number] | null = null;
-  for (const [key, i] of onset) if (failing.has(key) && (!best || i < best[1])) best = [key, i];
-  if (!best || best[1] < 0) return null;
-  const violation = finalByKey.get(best[0])!;
+  const since = brokenSince(before, writes, final);
+  let first = 0;
+  for (let k = 1; k < final.length; k++) if (since[k] < since[first]) first = k;
+  if (since[first] < 0) return null;
+  const violation = final[first];
   return {
-    write: best[1],
-    line: writes[best[1]].line,
+    write: since[first],
+    line: writes[since[first]].line,
     invariant: violation.message,
     elements: { halfedges: violation.halfedges ?? [], vertices: violation.vertices ?? [], faces: violation.faces ?? [] },
   };
