@@ -122,6 +122,19 @@ describe('the comparison with the library', () => {
     b.setPosition(0, 5, 5, 5);
     expect(compareMeshes(b, a)).toBe("your v0 is at (5, 5, 5), where the library's mesh has no vertex");
   });
+
+  it('finds each vertex near its place whichever way it moved, and none a few millionths away', () => {
+    // the cube's diagonal is √3: a millionth of it is the tolerance; every vertex moved along one diagonal direction or another
+    const a = meshOf(cube());
+    const tolerance = 1e-6 * Math.sqrt(3);
+    const moved = (by: number) => {
+      const b = a.clone();
+      for (const v of b.vertices()) b.setPosition(v, ...(b.position(v).map((x, axis) => x + (((v >> axis) & 1) === 1 ? by : -by) / Math.sqrt(3)) as [number, number, number]));
+      return b;
+    };
+    expect(compareMeshes(moved(0.9 * tolerance), a)).toBeNull();
+    expect(compareMeshes(moved(3 * tolerance), a)).toMatch(/where the library's mesh has no vertex$/);
+  });
 });
 
 describe("an instructor's exercise file", () => {

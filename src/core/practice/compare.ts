@@ -17,11 +17,11 @@ export function compareMeshes(yours: HalfedgeMesh, reference: HalfedgeMesh): str
   if (v !== rv || e !== re || f !== rf) {
     return `your mesh has ${v} vertices, ${e} edges and ${f} faces; the library's has ${rv}, ${re} and ${rf}`;
   }
-  const tolerance = sameSpotTolerance(reference);
+  const atReference = nearestVertexIn(reference, sameSpotTolerance(reference));
   const match = new Map<number, number>(); // your vertex → reference vertex
   const taken = new Set<number>();
   for (const v of yours.vertices()) {
-    const r = nearestVertex(reference, yours.position(v), tolerance);
+    const r = atReference(yours.position(v));
     if (r === -1) return `your v${v} is at ${formatPoint(yours.position(v))}, where the library's mesh has no vertex`;
     if (taken.has(r)) return `your v${v} is at ${formatPoint(yours.position(v))}, where another of your vertices already is`;
     taken.add(r);
@@ -107,12 +107,12 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
   if (v !== rv || e !== re || f !== rf) {
     return `your mesh has ${v} vertices, ${e} edges and ${f} faces; the library's has ${rv}, ${re} and ${rf}`;
   }
-  const tolerance = sameSpotTolerance(reference);
+  const atBefore = nearestVertexIn(before, sameSpotTolerance(reference));
   // your vertex → the vertex of `before` at its place (a triangulation adds no vertex)
   const match = new Map<number, number>();
   const taken = new Set<number>();
   for (const v of yours.vertices()) {
-    const b = nearestVertex(before, yours.position(v), tolerance);
+    const b = atBefore(yours.position(v));
     if (b === -1 || taken.has(b)) return `your v${v} is at ${formatPoint(yours.position(v))}, where the fixture had no vertex of its own`;
     taken.add(b);
     match.set(v, b);
@@ -125,7 +125,7 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
     if (!yourEdges.has(edgeKey(a, b))) return `the edge between v${a} and v${b} is gone from your mesh: a triangulation only adds diagonals`;
   }
   // the faces the library left (those it could not cut), as they were
-  const kept = new Set(cycles(reference, false).filter(({ corners }) => corners.length > 3).map(({ corners }) => canonical(corners.map((v) => nearestVertex(before, reference.position(v), tolerance)))));
+  const kept = new Set(cycles(reference, false).filter(({ corners }) => corners.length > 3).map(({ corners }) => canonical(corners.map((v) => atBefore(reference.position(v))))));
   // for each vertex of `before`, the faces it is a corner of, with its place around each
   const facesAt = new Map<number, { face: number; corners: number[] }[]>();
   for (const { id, corners } of cycles(before, false)) {
@@ -148,7 +148,7 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
       return `your f${id} (${corners.map((v) => `v${v}`).join(' → ')}) ${scale === 0 ? 'has no area' : 'folds over: it turns against its face'}: cut f${within.face} of the fixture along other diagonals`;
     }
   }
-  const referenceHoles = new Set(cycles(reference, true).map(({ corners }) => canonical(corners.map((v) => nearestVertex(before, reference.position(v), tolerance)))));
+  const referenceHoles = new Set(cycles(reference, true).map(({ corners }) => canonical(corners.map((v) => atBefore(reference.position(v))))));
   const yourHoles = cycles(yours, true);
   if (yourHoles.length !== referenceHoles.size) return `your mesh has ${yourHoles.length} boundary loops; the library's has ${referenceHoles.size}`;
   for (const { id, corners } of yourHoles) {
@@ -245,17 +245,41 @@ function edgeKey(a: number, b: number): string {
   return a < b ? `${a},${b}` : `${b},${a}`;
 }
 
-function nearestVertex(mesh: HalfedgeMesh, p: number[], tolerance: number): number {
-  let best = -1;
-  let bestDistance = tolerance;
+/**
+ * The vertex of `mesh` nearest a point, within `tolerance` (of equally near ones the highest id,
+ * as a scan of every vertex in order finds it), or -1. The vertices are put in cells twice the
+ * tolerance wide, so that only the 27 cells around the point can hold one near enough: matching
+ * every vertex of a mesh costs its size, not its square.
+ */
+function nearestVertexIn(mesh: HalfedgeMesh, tolerance: number): (p: number[]) => number {
+  const size = 2 * tolerance;
+  const cellOf = (p: number[]) => p.map((x) => Math.floor(x / size));
+  const cells = new Map<string, number[]>();
   for (const v of mesh.vertices()) {
-    const d = distance(p, mesh.position(v));
-    if (d <= bestDistance) {
-      best = v;
-      bestDistance = d;
-    }
+    const key = cellOf(mesh.position(v)).join(',');
+    const cell = cells.get(key);
+    if (cell) cell.push(v);
+    else cells.set(key, [v]);
   }
-  return best;
+  return (p) => {
+    const [i, j, k] = cellOf(p);
+    let best = -1;
+    let bestDistance = tolerance;
+    for (let di = -1; di <= 1; di++) {
+      for (let dj = -1; dj <= 1; dj++) {
+        for (let dk = -1; dk <= 1; dk++) {
+          for (const v of cells.get(`${i + di},${j + dj},${k + dk}`) ?? []) {
+            const d = distance(p, mesh.position(v));
+            if (d < bestDistance || (d === bestDistance && v > best)) {
+              best = v;
+              bestDistance = d;
+            }
+          }
+        }
+      }
+    }
+    return best;
+  };
 }
 
 function distance(p: number[], q: number[]): number {
