@@ -1,10 +1,32 @@
 import { describe, expect, it } from 'vitest';
-import { findExercise, gradeSolution } from '../../src/core/practice/index.js';
+import { findExercise, gradeSolution, type ShapeCall } from '../../src/core/practice/index.js';
 import { failures, grade, inProcess, solution } from './helpers.js';
 
 const wrong = (name: string) => `wrong/${name}`;
 
 describe('a wrong solution is told what is wrong', () => {
+  it('a rewrite of every next pointer of 2,000 triangles that breaks the last: its write and line are named', async () => {
+    // 6,130 halfedges, each next written again (and its prev), the last one skipping a halfedge
+    const source = [
+      'export default function (mesh) {',
+      '  const halfedges = mesh.halfedges();',
+      '  const last = halfedges.pop();',
+      '  for (const h of halfedges) mesh.setNext(h, mesh.next(h));',
+      '  mesh.setNext(last, mesh.next(mesh.next(last)));',
+      '}',
+    ].join('\n');
+    const exercise = { ...findExercise('loop-subdivision')!, fixtures: [{ name: 'a grid of 2,000 triangles', shapes: [['grid', 40, 25]] as ShapeCall[] }] };
+    const report = await gradeSolution(exercise, source, inProcess);
+    const [grid] = report.fixtures;
+    expect(grid.before.nHalfedges).toBe(6130);
+    expect(grid.writes).toHaveLength(2 * 6130);
+    const { write, line } = grid.firstBroken!;
+    expect(write).toBe(grid.writes.length - 2);
+    expect(grid.writes[write]).toMatchObject({ field: 'next', index: grid.before.halfedgeSlots - 1, line: 5 });
+    expect(line).toBe(5);
+    expect(failures(report)[0]).toMatch(new RegExp(`since write ${write + 1}, next\\(h6129\\) = h\\d+ at line 5 \\(\\d+ invariants are broken in all\\)$`));
+  });
+
   it('a flip that forgets a vertex halfedge: the invariant, the write and the line that broke it', async () => {
     const report = await grade('flip-edge', wrong('flip-forgets-vertex'));
     const inside = report.fixtures.find((f) => f.fixture === 'an edge inside a disk')!;

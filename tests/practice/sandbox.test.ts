@@ -1,10 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { buildMesh, cube, disk, tetrahedron } from '../../src/core/index.js';
 import {
+  budgetFor,
   BudgetError,
   compareMeshes,
+  DEFAULT_BUDGET,
   describeWrite,
   findExercise,
+  fixtureMesh,
   parseExercise,
   practiceMesh,
   replayWrites,
@@ -102,6 +105,21 @@ describe('the mesh API', () => {
     expect(() => {
       for (let h = 0; ; h = (h + 1) % 12) api.twin(h);
     }).toThrow(/ran for 2 s without returning/);
+  });
+
+  it('gives a small fixture the default budget and a large one more, in proportion to its halfedges', () => {
+    expect(budgetFor(meshOf(tetrahedron()))).toEqual(DEFAULT_BUDGET);
+    // 19,600 quads: 78,400 halfedges
+    const large = fixtureMesh({ name: 'a torus', shapes: [['torus', 140, 140]] });
+    expect(budgetFor(large)).toEqual({ reads: 7_840_000, milliseconds: 156_800, newElements: 156_800 });
+  });
+});
+
+describe('a fixture', () => {
+  it('has up to 20,000 faces, from shapes whose sides reach that far', () => {
+    expect(fixtureMesh({ name: 'a grid', shapes: [['grid', 100, 100]] }).nFaces).toBe(20_000);
+    expect(() => fixtureMesh({ name: 'a torus', shapes: [['torus', 150, 150]] })).toThrow('fixture "a torus" has 22500 faces; a fixture has at most 20000');
+    expect(() => fixtureMesh({ name: 'a strip', shapes: [['strip', 151]] })).toThrow('shape strip: its arguments must be numbers up to 150 (a fixture has at most 20,000 faces)');
   });
 });
 

@@ -18,7 +18,24 @@ export interface PracticeBudget {
   newElements: number;
 }
 
+/** The budget of a run on a small fixture, and the least any run gets. */
 export const DEFAULT_BUDGET: PracticeBudget = { reads: 1_000_000, milliseconds: 2000, newElements: 10_000 };
+
+/**
+ * The budget of a run on `mesh`: `DEFAULT_BUDGET`, or more in proportion to its halfedges on a
+ * large fixture. An operation over the whole mesh (a subdivision level) reads, writes and makes a
+ * fixed amount per halfedge: about 20 reads, 25 writes and 1.5 new edges. The writes take the
+ * time, each logged with its line (a stack trace of tens of microseconds): about 1.5 ms per
+ * halfedge on a busy machine. The budget leaves room above each.
+ */
+export function budgetFor(mesh: HalfedgeMesh): PracticeBudget {
+  const halfedges = mesh.nHalfedges;
+  return {
+    reads: Math.max(DEFAULT_BUDGET.reads, 100 * halfedges),
+    milliseconds: Math.max(DEFAULT_BUDGET.milliseconds, 2 * halfedges),
+    newElements: Math.max(DEFAULT_BUDGET.newElements, 2 * halfedges),
+  };
+}
 
 /** Thrown when code runs past a budget; the message says what it was doing. */
 export class BudgetError extends Error {
@@ -52,7 +69,7 @@ const RECENT = 64;
  * The API over `mesh` (which the code's writes change), the trace it fills, and `lineOf()`, which
  * says which line of the solution is running (from a stack trace; null when unknown).
  */
-export function practiceMesh(mesh: HalfedgeMesh, lineOf: () => number | null, budget: PracticeBudget = DEFAULT_BUDGET, now: () => number = Date.now) {
+export function practiceMesh(mesh: HalfedgeMesh, lineOf: () => number | null, budget: PracticeBudget = budgetFor(mesh), now: () => number = Date.now) {
   const trace: PracticeTrace = { writes: [], visits: [], reads: 0 };
   const recent: number[] = [];
   const recentFields: string[] = [];
@@ -201,7 +218,7 @@ export function practiceMesh(mesh: HalfedgeMesh, lineOf: () => number | null, bu
 
 /** The names of the API, in the order the panel documents them. */
 export const PRACTICE_API_NAMES = Object.keys(
-  practiceMesh({ halfedgeSlots: 0 } as HalfedgeMesh, () => null).api,
+  practiceMesh({ halfedgeSlots: 0 } as HalfedgeMesh, () => null, DEFAULT_BUDGET).api,
 ) as (keyof PracticeMesh)[];
 
 function checkId(id: unknown, slots: number, deleted: (i: number) => boolean, prefix: string, what: string, kind: string): number {
