@@ -248,28 +248,31 @@ function edgeKey(a: number, b: number): string {
 /**
  * The vertex of `mesh` nearest a point, within `tolerance` (of equally near ones the highest id,
  * as a scan of every vertex in order finds it), or -1. The vertices are put in cells twice the
- * tolerance wide, so that only the 27 cells around the point can hold one near enough: matching
- * every vertex of a mesh costs its size, not its square.
+ * tolerance wide, so that only the 27 cells around the point's own can hold one near enough:
+ * matching every vertex of a mesh costs its size, not its square.
  */
 function nearestVertexIn(mesh: HalfedgeMesh, tolerance: number): (p: number[]) => number {
   const size = 2 * tolerance;
-  const cellOf = (p: number[]) => p.map((x) => Math.floor(x / size));
-  const cells = new Map<string, number[]>();
+  const { positions } = mesh;
+  // cells whose numbers share a key are searched together: whatever is found there is measured
+  const key = (i: number, j: number, k: number) => Math.imul(i, 73856093) ^ Math.imul(j, 19349663) ^ Math.imul(k, 83492791);
+  const cellOf = (x: number) => Math.floor(x / size);
+  const cells = new Map<number, number[]>();
   for (const v of mesh.vertices()) {
-    const key = cellOf(mesh.position(v)).join(',');
-    const cell = cells.get(key);
+    const at = key(cellOf(positions[3 * v]), cellOf(positions[3 * v + 1]), cellOf(positions[3 * v + 2]));
+    const cell = cells.get(at);
     if (cell) cell.push(v);
-    else cells.set(key, [v]);
+    else cells.set(at, [v]);
   }
-  return (p) => {
-    const [i, j, k] = cellOf(p);
+  return ([x, y, z]) => {
+    const [i, j, k] = [cellOf(x), cellOf(y), cellOf(z)];
     let best = -1;
     let bestDistance = tolerance;
     for (let di = -1; di <= 1; di++) {
       for (let dj = -1; dj <= 1; dj++) {
         for (let dk = -1; dk <= 1; dk++) {
-          for (const v of cells.get(`${i + di},${j + dj},${k + dk}`) ?? []) {
-            const d = distance(p, mesh.position(v));
+          for (const v of cells.get(key(i + di, j + dj, k + dk)) ?? []) {
+            const d = Math.hypot(x - positions[3 * v], y - positions[3 * v + 1], z - positions[3 * v + 2]);
             if (d < bestDistance || (d === bestDistance && v > best)) {
               best = v;
               bestDistance = d;
