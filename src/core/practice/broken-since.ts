@@ -33,7 +33,7 @@
  */
 import { checkFace, checkHalfedge, checkParallelEdges, checkVertex, type Fail, VertexMap, type Violation } from '../invariants.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { meshArrayIndex, type MeshArrayName, meshArrays } from '../mesh-arrays.js';
+import { type ElementKind, elementKinds, meshArrayIndex, type MeshArrayName, meshArrays } from '../mesh-arrays.js';
 import { lowerEnd } from '../validate.js';
 import { applyWrite, pointerArrayOf, type PracticeWrite } from './writes.js';
 
@@ -81,6 +81,11 @@ export function brokenSince(before: HalfedgeMesh, writes: readonly PracticeWrite
   // per write: the fields it may change, and the old origin of each origin among them
   const changed: number[] = [];
   const oldOrigins: number[] = [];
+  const note = (array: number, index: number) => {
+    changed.push(fieldKey(array, index));
+    // a halfedge not made yet leaves no vertex
+    if (array === HE_VERTEX) oldOrigins.push(index, index < mesh.halfedgeSlots ? mesh.heVertex[index] : -1);
+  };
   const due = new Set<Watch>();
   const wake = (field: number) => {
     const set = watchers.get(field);
@@ -90,13 +95,9 @@ export function brokenSince(before: HalfedgeMesh, writes: readonly PracticeWrite
     const write = writes[i];
     changed.length = 0;
     oldOrigins.length = 0;
-    fieldsOf(write, (array, index) => {
-      changed.push(fieldKey(array, index));
-      // a halfedge not made yet leaves no vertex
-      if (array === HE_VERTEX) oldOrigins.push(index, index < mesh.halfedgeSlots ? mesh.heVertex[index] : -1);
-    });
+    fieldsOf(write, note);
     applyWrite(mesh, write);
-    for (const field of changed) wake(field);
+    for (let k = 0; k < changed.length; k++) wake(changed[k]);
     for (let k = 0; k < oldOrigins.length; k += 2) {
       const h = oldOrigins[k];
       const from = oldOrigins[k + 1];
@@ -105,6 +106,7 @@ export function brokenSince(before: HalfedgeMesh, writes: readonly PracticeWrite
       wake(fieldKey(LEAVING, from));
       wake(fieldKey(LEAVING, to));
     }
+    if (due.size === 0) continue;
     for (const watch of due) run(watch, i);
     due.clear();
   }
@@ -210,29 +212,31 @@ function fieldKey(array: number, index: number): number {
 
 /** Calls `visit` with every field `write` may change: the pointer it sets, or every field of the element it makes or deletes. */
 function fieldsOf(write: PracticeWrite, visit: (array: number, index: number) => void): void {
-  const element = (kind: 'vertex' | 'edge' | 'halfedge' | 'face', id: number) => {
-    meshArrays.forEach((spec, array) => {
-      if (spec.owner === kind) visit(array, id);
-    });
-  };
   switch (write.field) {
     case 'position':
       return;
     case 'newVertex':
     case 'deleteVertex':
-      return element('vertex', write.index);
+      return visitEach(OWNED.vertex, write.index, visit);
     case 'newEdge':
     case 'deleteEdge':
-      element('edge', write.index);
-      element('halfedge', 2 * write.index);
-      return element('halfedge', 2 * write.index + 1);
+      visitEach(OWNED.edge, write.index, visit);
+      visitEach(OWNED.halfedge, 2 * write.index, visit);
+      return visitEach(OWNED.halfedge, 2 * write.index + 1, visit);
     case 'newFace':
     case 'deleteFace':
-      return element('face', write.index);
+      return visitEach(OWNED.face, write.index, visit);
     default:
       visit(meshArrayIndex[pointerArrayOf[write.field]], write.index);
   }
 }
+
+function visitEach(arrays: readonly number[], index: number, visit: (array: number, index: number) => void): void {
+  for (const array of arrays) visit(array, index);
+}
+
+/** The arrays each kind of element owns, by their place in `meshArrays`. */
+const OWNED = Object.fromEntries(elementKinds.map((kind) => [kind, meshArrays.flatMap((spec, array) => (spec.owner === kind ? [array] : []))])) as Record<ElementKind, number[]>;
 
 /**
  * `mesh` as the checks see it, noting in `reads` every entry of its arrays they read: the checks
