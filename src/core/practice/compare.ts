@@ -251,7 +251,7 @@ function edgeKey(a: number, b: number): string {
  * tolerance wide, so that only the 27 cells around the point's own can hold one near enough:
  * matching every vertex of a mesh costs its size, not its square.
  */
-function nearestVertexIn(mesh: HalfedgeMesh, tolerance: number): (p: number[]) => number {
+export function nearestVertexIn(mesh: HalfedgeMesh, tolerance: number): (p: number[]) => number {
   const size = 2 * tolerance;
   const { positions } = mesh;
   // cells whose numbers share a key are searched together: whatever is found there is measured
@@ -290,7 +290,7 @@ function distance(p: number[], q: number[]): number {
 }
 
 /** How near two positions must be to be the same vertex: a millionth of the mesh's size. */
-function sameSpotTolerance(mesh: HalfedgeMesh): number {
+export function sameSpotTolerance(mesh: HalfedgeMesh): number {
   const box = boundingBox(mesh);
   const diagonal = box ? Math.hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]) : 0;
   return 1e-6 * Math.max(1e-12, diagonal);

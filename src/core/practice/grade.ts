@@ -22,6 +22,7 @@ import { brokenSince } from './broken-since.js';
 import { compareAnswers, compareMeshes, compareTriangulation } from './compare.js';
 import type { Exercise, Fixture } from './exercise.js';
 import type { RunOutput } from './run.js';
+import { whatToFix } from './what-to-fix.js';
 import { describeWrite, type PracticeWrite, replayWrites } from './writes.js';
 
 /**
@@ -86,7 +87,7 @@ export function checkNames(exercise: Exercise): string[] {
 
 /**
  * The checks of one fixture. `before` is the fixture's mesh (not changed); `reference` is what the
- * reference answered and left. `partialCredit`: whether a hidden fixture the library handles and
+ * reference answered and left, and the fields it wrote in order (`inWriteOrder`), when known. `partialCredit`: whether a hidden fixture the library handles and
  * the solution refused cleanly earns `PARTIAL_CREDIT` (it does once the solution passes every
  * fixture that is not hidden: refusing is worth something beside a working edit, not instead of one).
  */
@@ -95,7 +96,7 @@ export function gradeFixture(
   fixture: Fixture,
   before: HalfedgeMesh,
   output: RunOutput,
-  reference: { value: unknown; mesh: HalfedgeMesh },
+  reference: { value: unknown; mesh: HalfedgeMesh; order?: readonly number[] },
   partialCredit = true,
 ): FixtureResult {
   const after = replayWrites(before.clone(), output.writes);
@@ -137,6 +138,11 @@ export function gradeFixture(
         compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ??
         (exercise.compare === 'triangulation' ? compareTriangulation(after, reference.mesh, before) : compareMeshes(after, reference.mesh)),
     );
+    // what to change, from the pointers the reference sets: not where the code threw (that comes
+    // first), nor on a hidden fixture (it names ids), nor for a triangulation (any diagonals pass)
+    const failed = checks.filter((c) => c.status === 'failed');
+    const hint = failed.length > 0 && !output.error && !fixture.hidden && exercise.compare !== 'triangulation' ? whatToFix(before, after, output.writes, { mesh: reference.mesh, order: reference.order ?? [] }) : null;
+    if (hint) for (const c of failed) c.message += `. To fix: ${hint}`;
   }
   if (fixture.hidden) {
     for (const c of checks) {

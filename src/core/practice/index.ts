@@ -13,5 +13,6 @@ export * from './mesh-api.js';
 export * from './run.js';
 export * from './solution-error.js';
 export * from './source.js';
+export * from './what-to-fix.js';
 export * from './writes.js';
 export * from './drawable.js';
