@@ -4,7 +4,7 @@
  * (`tests/practice/solutions/loop-subdivision.js`, about 75 writes a triangle), with one of the
  * last `next` writes set wrong, so that the first broken write is searched through all of them.
  * What is timed is `gradeFixture`: the writes replayed, the result validated, the first broken
- * write found and the mesh compared with the library's.
+ * write found, the mesh compared with the library's and what to fix said.
  *
  * The peer is one `validate` of the mesh the writes leave, so the ratio says how many whole
  * validations the grading costs. The search it replaced validated after every write: a million
