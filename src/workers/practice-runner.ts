@@ -1,8 +1,9 @@
 /**
  * The outside of a practice sandbox: sends a solution and its fixtures to a fresh sandbox worker,
  * and watches the clock. A worker that has not answered a fixture `HARD_MARGIN_MS` past the
- * fixture's time budget (`budgetFor`, which grows with the fixture) is terminated (code that loops without reading the mesh cannot be stopped any other way), the
- * fixture is reported as stopped, and a new worker takes the fixtures left. Works with the
+ * fixture's time budget (`budgetFor`, which grows with the fixture) is terminated (code that loops
+ * without reading the mesh cannot be stopped any other way), the fixture is reported as stopped,
+ * and a new worker takes the fixtures left. Works with the
  * browser's `Worker` and Node's worker threads through `SandboxPort`. The fixtures after one that
  * had to be terminated are not run (they would most likely spin too, each for the whole limit).
  */

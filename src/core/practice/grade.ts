@@ -87,9 +87,10 @@ export function checkNames(exercise: Exercise): string[] {
 
 /**
  * The checks of one fixture. `before` is the fixture's mesh (not changed); `reference` is what the
- * reference answered and left, and the fields it wrote in order (`inWriteOrder`), when known. `partialCredit`: whether a hidden fixture the library handles and
- * the solution refused cleanly earns `PARTIAL_CREDIT` (it does once the solution passes every
- * fixture that is not hidden: refusing is worth something beside a working edit, not instead of one).
+ * reference answered and left, and the fields it wrote in order (`inWriteOrder`), when known.
+ * `partialCredit`: whether a hidden fixture the library handles and the solution refused cleanly
+ * earns `PARTIAL_CREDIT` (it does once the solution passes every fixture that is not hidden:
+ * refusing is worth something beside a working edit, not instead of one).
  */
 export function gradeFixture(
   exercise: Exercise,
