@@ -28,6 +28,7 @@ const caseGroups: Array<(sizes: number[]) => BenchCase[]> = await Promise.all([
   import('./cases/subdivision.js').then((m) => m.subdivisionCases),
   import('./cases/cut.js').then((m) => m.cutCases),
   import('./cases/smooth-decimate.js').then((m) => m.smoothDecimateCases),
+  import('./cases/practice.js').then((m) => m.practiceCases),
 ]);
 if (args.includes('--native')) {
   await runNativeComparison(args);

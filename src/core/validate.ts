@@ -80,4 +80,4 @@ function checkAllParallelEdges(mesh: HalfedgeMesh, fail: Fail): void {
 }
 
 /** Meeting every pair at both ends, the whole-mesh pass names it at the lower one. */
-const lowerEnd = (v: number, target: number) => v < target;
+export const lowerEnd = (v: number, target: number) => v < target;

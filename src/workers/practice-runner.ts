@@ -1,12 +1,14 @@
 /**
  * The outside of a practice sandbox: sends a solution and its fixtures to a fresh sandbox worker,
- * and watches the clock. A worker that has not answered a fixture within `HARD_LIMIT_MS` is
- * terminated (code that loops without reading the mesh cannot be stopped any other way), the
- * fixture is reported as stopped, and a new worker takes the fixtures left. Works with the
+ * and watches the clock. A worker that has not answered a fixture `HARD_MARGIN_MS` past the
+ * fixture's time budget (`budgetFor`, which grows with the fixture) is terminated (code that loops
+ * without reading the mesh cannot be stopped any other way), the fixture is reported as stopped,
+ * and a new worker takes the fixtures left. Works with the
  * browser's `Worker` and Node's worker threads through `SandboxPort`. The fixtures after one that
  * had to be terminated are not run (they would most likely spin too, each for the whole limit).
  */
 import { serializeMesh } from '../core/index.js';
+import { budgetFor } from '../core/practice/mesh-api.js';
 import type { FixtureRun, SolutionRunner } from '../core/practice/grade-solution.js';
 import type { RunOutput } from '../core/practice/run.js';
 import { SolutionError } from '../core/practice/solution-error.js';
@@ -20,14 +22,14 @@ export interface SandboxPort {
   terminate(): void;
 }
 
-/** Past the sandbox's own 2 s budget (checked as the code reads), the worker is terminated. */
-export const HARD_LIMIT_MS = 2500;
+/** This long past the sandbox's own time budget (checked as the code reads), the worker is terminated. */
+export const HARD_MARGIN_MS = 500;
 
-export function sandboxRunner(openSandbox: () => SandboxPort, hardLimitMs = HARD_LIMIT_MS): SolutionRunner {
+export function sandboxRunner(openSandbox: () => SandboxPort, hardMarginMs = HARD_MARGIN_MS): SolutionRunner {
   return async (source, runs) => {
     const outputs: RunOutput[] = [];
     while (outputs.length < runs.length) {
-      const { done, stopped } = await runSome(openSandbox(), source, runs.slice(outputs.length), hardLimitMs);
+      const { done, stopped } = await runSome(openSandbox(), source, runs.slice(outputs.length), hardMarginMs);
       outputs.push(...done);
       if (stopped?.terminated) {
         outputs.push(stopped.output);
@@ -50,7 +52,7 @@ interface SomeRun {
 }
 
 /** Runs fixtures in one worker until they are done, or one of them overruns or kills the worker. */
-function runSome(port: SandboxPort, source: string, runs: FixtureRun[], hardLimitMs: number): Promise<SomeRun> {
+function runSome(port: SandboxPort, source: string, runs: FixtureRun[], hardMarginMs: number): Promise<SomeRun> {
   return new Promise((resolve, reject) => {
     const done: RunOutput[] = [];
     let timer: ReturnType<typeof setTimeout>;
@@ -59,8 +61,10 @@ function runSome(port: SandboxPort, source: string, runs: FixtureRun[], hardLimi
       port.terminate();
       resolve({ done, stopped });
     };
+    // the clock of the fixture the worker is on now
     const arm = () => {
       clearTimeout(timer);
+      const hardLimitMs = budgetFor(runs[done.length].mesh).milliseconds + hardMarginMs;
       const message = `your code ran for ${hardLimitMs / 1000} s without returning and without reading the mesh, so it was stopped: a loop whose condition never changes?`;
       timer = setTimeout(() => finish({ output: stoppedOutput(message), terminated: true }), hardLimitMs);
     };
@@ -72,7 +76,7 @@ function runSome(port: SandboxPort, source: string, runs: FixtureRun[], hardLimi
           reject(new SolutionError(message.message, message.line));
         } else if (message.kind === 'output') {
           done.push(message.output);
-          arm();
+          if (done.length < runs.length) arm();
         } else {
           finish(null);
         }

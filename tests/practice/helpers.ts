@@ -1,7 +1,10 @@
-/** Running solutions in this process (the sandbox's own code, without its worker or lock-down) and reading the test solutions. */
+/**
+ * Running solutions in this process (the sandbox's own code, without its worker or lock-down),
+ * reading the test solutions, and the first-broken search as it first was, to hold the grader's to.
+ */
 import { readFileSync } from 'node:fs';
-import { serializeMesh } from '../../src/core/index.js';
-import { findExercise, gradeSolution, type GradeReport, type RunOutput, SolutionError, type SolutionRunner } from '../../src/core/practice/index.js';
+import { type HalfedgeMesh, serializeMesh, validate, type Violation } from '../../src/core/index.js';
+import { applyWrite, findExercise, gradeSolution, type GradeReport, keyOf, type PracticeWrite, type RunOutput, SolutionError, type SolutionRunner } from '../../src/core/practice/index.js';
 import { type SandboxMessage, serveRequest } from '../../src/workers/practice-sandbox.js';
 
 export const inProcess: SolutionRunner = async (source, runs) => {
@@ -34,4 +37,25 @@ export function grade(exercise: string, solutionName: string): Promise<GradeRepo
 
 export function failures(report: GradeReport): string[] {
   return report.checks.filter((c) => !c.passed).map((c) => `${c.name} — ${c.message}`);
+}
+
+/**
+ * `brokenSince` the slow way, as the grader first did it: `validate` the whole mesh after every
+ * write and note when each final violation began to fail. The oracle for the grader's search
+ * (it costs the writes times the mesh, so only for small fixtures).
+ */
+export function brokenSinceByValidating(before: HalfedgeMesh, writes: readonly PracticeWrite[], final: readonly Violation[]): number[] {
+  const wanted = new Set(final.map(keyOf));
+  const failingIn = (mesh: HalfedgeMesh) => new Set(validate(mesh, { limit: Infinity }).map(keyOf).filter((key) => wanted.has(key)));
+  const onset = new Map<string, number>();
+  let failing = failingIn(before);
+  for (const key of failing) onset.set(key, -1);
+  const mesh = before.clone();
+  writes.forEach((write, i) => {
+    applyWrite(mesh, write);
+    const now = failingIn(mesh);
+    for (const key of now) if (!failing.has(key)) onset.set(key, i);
+    failing = now;
+  });
+  return final.map((v) => onset.get(keyOf(v))!);
 }

@@ -1,10 +1,32 @@
 import { describe, expect, it } from 'vitest';
-import { findExercise, gradeSolution } from '../../src/core/practice/index.js';
+import { findExercise, type GradeReport, gradeSolution, type ShapeCall } from '../../src/core/practice/index.js';
 import { failures, grade, inProcess, solution } from './helpers.js';
 
 const wrong = (name: string) => `wrong/${name}`;
 
 describe('a wrong solution is told what is wrong', () => {
+  it('a rewrite of every next pointer of 2,000 triangles that breaks the last: its write and line are named', async () => {
+    // 6,130 halfedges, each next written again (and its prev), the last one skipping a halfedge
+    const source = [
+      'export default function (mesh) {',
+      '  const halfedges = mesh.halfedges();',
+      '  const last = halfedges.pop();',
+      '  for (const h of halfedges) mesh.setNext(h, mesh.next(h));',
+      '  mesh.setNext(last, mesh.next(mesh.next(last)));',
+      '}',
+    ].join('\n');
+    const exercise = { ...findExercise('loop-subdivision')!, fixtures: [{ name: 'a grid of 2,000 triangles', shapes: [['grid', 40, 25]] as ShapeCall[] }] };
+    const report = await gradeSolution(exercise, source, inProcess);
+    const [grid] = report.fixtures;
+    expect(grid.before.nHalfedges).toBe(6130);
+    expect(grid.writes).toHaveLength(2 * 6130);
+    const { write, line } = grid.firstBroken!;
+    expect(write).toBe(grid.writes.length - 2);
+    expect(grid.writes[write]).toMatchObject({ field: 'next', index: grid.before.halfedgeSlots - 1, line: 5 });
+    expect(line).toBe(5);
+    expect(failures(report)[0]).toMatch(new RegExp(`since write ${write + 1}, next\\(h6129\\) = h\\d+ at line 5 \\(\\d+ invariants are broken in all\\)$`));
+  });
+
   it('a flip that forgets a vertex halfedge: the invariant, the write and the line that broke it', async () => {
     const report = await grade('flip-edge', wrong('flip-forgets-vertex'));
     const inside = report.fixtures.find((f) => f.fixture === 'an edge inside a disk')!;
@@ -16,6 +38,7 @@ describe('a wrong solution is told what is wrong', () => {
     expect(invariant).toMatch(/^v\d+'s halfedge h\d+ does not start at v\d+$/);
     expect(elements.vertices.length).toBeGreaterThan(0);
     expect(failures(report).join('\n')).toContain(`since write ${write + 1}, origin(h`);
+    expect(inside.checks[0].message).toMatch(/To fix: the reference sets v6's halfedge to h22 \(or any other halfedge leaving v6\); your code never writes v6's halfedge, which is still h20$/);
     // the result has the right shape, only its vertex halfedges are wrong
     expect(inside.checks.find((c) => c.name.endsWith('same as the library'))!.passed).toBe(true);
   });
@@ -60,13 +83,16 @@ describe('a wrong solution is told what is wrong', () => {
     expect(inside.firstBroken!.invariant).toMatch(/^v\d+'s halfedge h\d+ does not start at v\d+$/);
     expect(inside.writes[inside.firstBroken!.write]).toMatchObject({ field: 'deleteEdge', line: 39 });
     expect(failures(report)[0]).toContain('deleteEdge(e10) at line 39');
+    // and what to do about it, the pointer the library sets that the code leaves naming a deleted halfedge
+    expect(failures(report)[0]).toMatch(/To fix: the reference sets v6's halfedge to h22 \(or any other halfedge leaving v6\); your code never writes v6's halfedge, and deleteEdge\(e10\) at line 39 removed the one it had$/);
   });
 
   it('a face made a hole whose corners keep a halfedge that is not on the boundary: blamed on the first face(h) = -1', async () => {
     const report = await grade('make-boundary', wrong('make-boundary-forgets-corners'));
     const inside = report.fixtures[0];
     expect(inside.firstBroken!.invariant).toMatch(/^v\d+ is on the boundary \(h\d+ leaves it\) but its halfedge h\d+ is not a boundary halfedge$/);
-    expect(failures(report)[0]).toMatch(/since write 1, face\(h\d+\) = -1 at line 28$/);
+    expect(failures(report)[0]).toMatch(/since write 1, face\(h\d+\) = -1 at line 28\. To fix: /);
+    expect(failures(report)[0]).toMatch(/To fix: the reference sets v0's halfedge to h0 \(or any other boundary halfedge leaving v0\); your code never writes v0's halfedge, which is still h21$/);
   });
 
   it('a triangulation by fans passes every convex face and fails the hidden ones with their rules', async () => {
@@ -119,5 +145,69 @@ describe('a wrong solution is told what is wrong', () => {
     const source = solution('one-ring').replace('return ring;', 'return ring.reverse();');
     const report = await gradeSolution(findExercise('one-ring')!, source, inProcess);
     expect(failures(report).some((f) => f.includes('(any starting vertex is right; the order is not)'))).toBe(true);
+  });
+});
+
+describe('a wrong edit is told what to fix: the first pointer the library sets that the code does not', () => {
+  /** The right solution to `exercise` with `from` replaced by `to`, graded. */
+  const gradeChanged = async (exercise: string, from: string, to: string) => {
+    const source = solution(exercise).replace(from, to);
+    expect(source).not.toBe(solution(exercise));
+    return gradeSolution(findExercise(exercise)!, source, inProcess);
+  };
+  const fixOf = (report: GradeReport, fixture: string) => report.fixtures.find((f) => f.fixture === fixture)!.checks[0].message.split('. To fix: ')[1];
+
+  it('a flip that forgets to move a halfedge into its new face: the face it never writes', async () => {
+    const report = await gradeChanged('flip-edge', '  mesh.setFace(hn, f1);\n', '');
+    expect(fixOf(report, 'an edge inside a disk')).toBe("the reference sets h17's face to f5; your code never writes h17's face, which is still f4");
+  });
+
+  it('a flip that starts a halfedge at the wrong corner: the write and its line', async () => {
+    const report = await gradeChanged('flip-edge', 'mesh.setOrigin(h, d);', 'mesh.setOrigin(h, c);');
+    expect(fixOf(report, 'an edge inside a disk')).toBe("the reference sets h20's origin to v1; your code sets it to v5: origin(h20) = v5 at line 34");
+    // said on the comparison with the library too
+    expect(report.fixtures[0].checks[1].message).toMatch(/is not a face of the library's result\. To fix: the reference sets h20's origin/);
+  });
+
+  it('a collapse that deletes the halfedge a corner still names: the deleteEdge that removed it', async () => {
+    const report = await gradeChanged('collapse-edge', '    if (mesh.vertexHalfedge(c) === x) mesh.setVertexHalfedge(c, hp);\n', '');
+    expect(fixOf(report, 'an edge inside a disk')).toBe(
+      "the reference sets v5's halfedge to h18 (or any other halfedge leaving v5); your code never writes v5's halfedge, and deleteEdge(e8) at line 57 removed the one it had",
+    );
+  });
+
+  it('a collapse on the boundary that gives the survivor an inner halfedge: the write, and the rule it breaks', async () => {
+    const report = await gradeChanged('collapse-edge', 'around.find((g) => mesh.isBoundary(g)) ?? around[0]', 'around[0]');
+    expect(fixOf(report, 'an edge on the boundary')).toBe(
+      "the reference sets v10's halfedge to h37 (or any other boundary halfedge leaving v10); your code sets it to h38: vertexHalfedge(v10) = h38 at line 85",
+    );
+  });
+
+  it('a split that leaves the far end naming the halfedge that now starts at the new vertex', async () => {
+    const report = await gradeChanged('split-edge', '  if (mesh.vertexHalfedge(b) === t) mesh.setVertexHalfedge(b, gt);\n', '');
+    expect(fixOf(report, 'an edge on the boundary')).toBe(
+      "the reference sets v2's halfedge to h25 (or any other boundary halfedge leaving v2); your code never writes v2's halfedge, which is still h3",
+    );
+  });
+
+  it('a split that leaves its old face naming a halfedge of the new one', async () => {
+    const report = await gradeChanged('split-edge', '  mesh.setFaceHalfedge(f, x0);\n', '');
+    expect(fixOf(report, 'an edge on the boundary')).toBe("the reference sets f0's halfedge to h26 (or any other halfedge of f0); your code never writes f0's halfedge, which is still h0");
+  });
+
+  it('a pointer the library leaves alone, written wrong: the write', async () => {
+    // the flip also points c at a halfedge that no longer leaves it
+    const report = await gradeChanged('flip-edge', '  return true;\n}', '  mesh.setVertexHalfedge(c, h);\n  return true;\n}');
+    expect(fixOf(report, 'an edge inside a disk')).toMatch(
+      /^the reference leaves v(\d+)'s halfedge as it was, h\d+ \(or any other halfedge leaving v\1\); your code sets it to h20: vertexHalfedge\(v\1\) = h20 at line 42$/,
+    );
+  });
+
+  it('nothing on a hidden fixture, where no id is named', async () => {
+    const report = await grade('make-boundary', wrong('make-boundary-forgets-corners'));
+    const hidden = report.checks.filter((c) => c.hidden && !c.passed);
+    expect(hidden.length).toBeGreaterThan(0);
+    expect(hidden.every((c) => !c.message.includes('To fix'))).toBe(true);
+    expect(report.checks.find((c) => !c.hidden && !c.passed)!.message).toContain('To fix');
   });
 });

@@ -1,10 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { buildMesh, cube, disk, tetrahedron } from '../../src/core/index.js';
 import {
+  budgetFor,
   BudgetError,
   compareMeshes,
+  DEFAULT_BUDGET,
   describeWrite,
   findExercise,
+  fixtureMesh,
   parseExercise,
   practiceMesh,
   replayWrites,
@@ -103,6 +106,21 @@ describe('the mesh API', () => {
       for (let h = 0; ; h = (h + 1) % 12) api.twin(h);
     }).toThrow(/ran for 2 s without returning/);
   });
+
+  it('gives a small fixture the default budget and a large one more, in proportion to its halfedges', () => {
+    expect(budgetFor(meshOf(tetrahedron()))).toEqual(DEFAULT_BUDGET);
+    // 19,600 quads: 78,400 halfedges
+    const large = fixtureMesh({ name: 'a torus', shapes: [['torus', 140, 140]] });
+    expect(budgetFor(large)).toEqual({ reads: 7_840_000, milliseconds: 156_800, newElements: 156_800 });
+  });
+});
+
+describe('a fixture', () => {
+  it('has up to 20,000 faces, from shapes whose sides reach that far', () => {
+    expect(fixtureMesh({ name: 'a grid', shapes: [['grid', 100, 100]] }).nFaces).toBe(20_000);
+    expect(() => fixtureMesh({ name: 'a torus', shapes: [['torus', 150, 150]] })).toThrow('fixture "a torus" has 22500 faces; a fixture has at most 20000');
+    expect(() => fixtureMesh({ name: 'a strip', shapes: [['strip', 151]] })).toThrow('shape strip: its arguments must be numbers up to 150 (a fixture has at most 20,000 faces)');
+  });
 });
 
 describe('the comparison with the library', () => {
@@ -121,6 +139,19 @@ describe('the comparison with the library', () => {
     expect(compareMeshes(b, a)).toBeNull();
     b.setPosition(0, 5, 5, 5);
     expect(compareMeshes(b, a)).toBe("your v0 is at (5, 5, 5), where the library's mesh has no vertex");
+  });
+
+  it('finds each vertex near its place whichever way it moved, and none a few millionths away', () => {
+    // the cube's diagonal is √3: a millionth of it is the tolerance; every vertex moved along one diagonal direction or another
+    const a = meshOf(cube());
+    const tolerance = 1e-6 * Math.sqrt(3);
+    const moved = (by: number) => {
+      const b = a.clone();
+      for (const v of b.vertices()) b.setPosition(v, ...(b.position(v).map((x, axis) => x + (((v >> axis) & 1) === 1 ? by : -by) / Math.sqrt(3)) as [number, number, number]));
+      return b;
+    };
+    expect(compareMeshes(moved(0.9 * tolerance), a)).toBeNull();
+    expect(compareMeshes(moved(3 * tolerance), a)).toMatch(/where the library's mesh has no vertex$/);
   });
 });
 

@@ -17,11 +17,11 @@ export function compareMeshes(yours: HalfedgeMesh, reference: HalfedgeMesh): str
   if (v !== rv || e !== re || f !== rf) {
     return `your mesh has ${v} vertices, ${e} edges and ${f} faces; the library's has ${rv}, ${re} and ${rf}`;
   }
-  const tolerance = sameSpotTolerance(reference);
+  const atReference = nearestVertexIn(reference, sameSpotTolerance(reference));
   const match = new Map<number, number>(); // your vertex → reference vertex
   const taken = new Set<number>();
   for (const v of yours.vertices()) {
-    const r = nearestVertex(reference, yours.position(v), tolerance);
+    const r = atReference(yours.position(v));
     if (r === -1) return `your v${v} is at ${formatPoint(yours.position(v))}, where the library's mesh has no vertex`;
     if (taken.has(r)) return `your v${v} is at ${formatPoint(yours.position(v))}, where another of your vertices already is`;
     taken.add(r);
@@ -107,12 +107,12 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
   if (v !== rv || e !== re || f !== rf) {
     return `your mesh has ${v} vertices, ${e} edges and ${f} faces; the library's has ${rv}, ${re} and ${rf}`;
   }
-  const tolerance = sameSpotTolerance(reference);
+  const atBefore = nearestVertexIn(before, sameSpotTolerance(reference));
   // your vertex → the vertex of `before` at its place (a triangulation adds no vertex)
   const match = new Map<number, number>();
   const taken = new Set<number>();
   for (const v of yours.vertices()) {
-    const b = nearestVertex(before, yours.position(v), tolerance);
+    const b = atBefore(yours.position(v));
     if (b === -1 || taken.has(b)) return `your v${v} is at ${formatPoint(yours.position(v))}, where the fixture had no vertex of its own`;
     taken.add(b);
     match.set(v, b);
@@ -125,7 +125,7 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
     if (!yourEdges.has(edgeKey(a, b))) return `the edge between v${a} and v${b} is gone from your mesh: a triangulation only adds diagonals`;
   }
   // the faces the library left (those it could not cut), as they were
-  const kept = new Set(cycles(reference, false).filter(({ corners }) => corners.length > 3).map(({ corners }) => canonical(corners.map((v) => nearestVertex(before, reference.position(v), tolerance)))));
+  const kept = new Set(cycles(reference, false).filter(({ corners }) => corners.length > 3).map(({ corners }) => canonical(corners.map((v) => atBefore(reference.position(v))))));
   // for each vertex of `before`, the faces it is a corner of, with its place around each
   const facesAt = new Map<number, { face: number; corners: number[] }[]>();
   for (const { id, corners } of cycles(before, false)) {
@@ -148,7 +148,7 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
       return `your f${id} (${corners.map((v) => `v${v}`).join(' → ')}) ${scale === 0 ? 'has no area' : 'folds over: it turns against its face'}: cut f${within.face} of the fixture along other diagonals`;
     }
   }
-  const referenceHoles = new Set(cycles(reference, true).map(({ corners }) => canonical(corners.map((v) => nearestVertex(before, reference.position(v), tolerance)))));
+  const referenceHoles = new Set(cycles(reference, true).map(({ corners }) => canonical(corners.map((v) => atBefore(reference.position(v))))));
   const yourHoles = cycles(yours, true);
   if (yourHoles.length !== referenceHoles.size) return `your mesh has ${yourHoles.length} boundary loops; the library's has ${referenceHoles.size}`;
   for (const { id, corners } of yourHoles) {
@@ -245,17 +245,44 @@ function edgeKey(a: number, b: number): string {
   return a < b ? `${a},${b}` : `${b},${a}`;
 }
 
-function nearestVertex(mesh: HalfedgeMesh, p: number[], tolerance: number): number {
-  let best = -1;
-  let bestDistance = tolerance;
+/**
+ * The vertex of `mesh` nearest a point, within `tolerance` (of equally near ones the highest id,
+ * as a scan of every vertex in order finds it), or -1. The vertices are put in cells twice the
+ * tolerance wide, so that only the 27 cells around the point's own can hold one near enough:
+ * matching every vertex of a mesh costs its size, not its square.
+ */
+export function nearestVertexIn(mesh: HalfedgeMesh, tolerance: number): (p: number[]) => number {
+  const size = 2 * tolerance;
+  const { positions } = mesh;
+  // cells whose numbers share a key are searched together: whatever is found there is measured
+  const key = (i: number, j: number, k: number) => Math.imul(i, 73856093) ^ Math.imul(j, 19349663) ^ Math.imul(k, 83492791);
+  const cellOf = (x: number) => Math.floor(x / size);
+  const cells = new Map<number, number[]>();
   for (const v of mesh.vertices()) {
-    const d = distance(p, mesh.position(v));
-    if (d <= bestDistance) {
-      best = v;
-      bestDistance = d;
-    }
+    const at = key(cellOf(positions[3 * v]), cellOf(positions[3 * v + 1]), cellOf(positions[3 * v + 2]));
+    const cell = cells.get(at);
+    if (cell) cell.push(v);
+    else cells.set(at, [v]);
   }
-  return best;
+  return ([x, y, z]) => {
+    const [i, j, k] = [cellOf(x), cellOf(y), cellOf(z)];
+    let best = -1;
+    let bestDistance = tolerance;
+    for (let di = -1; di <= 1; di++) {
+      for (let dj = -1; dj <= 1; dj++) {
+        for (let dk = -1; dk <= 1; dk++) {
+          for (const v of cells.get(key(i + di, j + dj, k + dk)) ?? []) {
+            const d = Math.hypot(x - positions[3 * v], y - positions[3 * v + 1], z - positions[3 * v + 2]);
+            if (d < bestDistance || (d === bestDistance && v > best)) {
+              best = v;
+              bestDistance = d;
+            }
+          }
+        }
+      }
+    }
+    return best;
+  };
 }
 
 function distance(p: number[], q: number[]): number {
@@ -263,7 +290,7 @@ function distance(p: number[], q: number[]): number {
 }
 
 /** How near two positions must be to be the same vertex: a millionth of the mesh's size. */
-function sameSpotTolerance(mesh: HalfedgeMesh): number {
+export function sameSpotTolerance(mesh: HalfedgeMesh): number {
   const box = boundingBox(mesh);
   const diagonal = box ? Math.hypot(box.max[0] - box.min[0], box.max[1] - box.min[1], box.max[2] - box.min[2]) : 0;
   return 1e-6 * Math.max(1e-12, diagonal);

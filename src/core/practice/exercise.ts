@@ -103,7 +103,16 @@ export interface Exercise {
   reference: ReferenceFunction | string;
 }
 
-export const MAX_FIXTURE_FACES = 2000;
+/**
+ * The most faces a fixture may have: enough for a subdivision level on a real mesh. Grading costs
+ * about what the solution's writes do (the first broken write is found from the checks each write
+ * touched, vertices are matched through a grid), and the sandbox's budgets grow with the fixture
+ * (`budgetFor`); what stays large is the run itself, a minute or so for a Loop level on 20,000 faces.
+ */
+export const MAX_FIXTURE_FACES = 20_000;
+
+/** The largest argument of a generated shape: a side long enough for a shape of `MAX_FIXTURE_FACES` faces (a torus of 140 × 140 quads); the faces are counted after. */
+const MAX_SHAPE_ARGUMENT = 150;
 
 /** The mesh of a fixture, built as a file would be (`files` holds the bytes of `fixture.file`). */
 export function fixtureMesh(fixture: Fixture, files: ReadonlyMap<string, Uint8Array> = new Map()): HalfedgeMesh {
@@ -119,7 +128,6 @@ export function fixtureMesh(fixture: Fixture, files: ReadonlyMap<string, Uint8Ar
   }
   const faces = soup.faceStarts.length - 1;
   if (faces < 1) throw new InvalidInputError(`fixture "${fixture.name}" has no faces: give it shapes or a file`);
-  // a fixture is re-checked after every write a solution makes: it has to stay small
   if (faces > MAX_FIXTURE_FACES) throw new InvalidInputError(`fixture "${fixture.name}" has ${faces} faces; a fixture has at most ${MAX_FIXTURE_FACES}`);
   return buildMesh(soup).mesh;
 }
@@ -149,8 +157,8 @@ function shapeSoup([name, ...args]: ShapeCall): PolygonSoup {
   if (!(shapeNames as readonly string[]).includes(name)) {
     throw new InvalidInputError(`unknown shape "${String(name)}" (known: ${shapeNames.join(', ')})`);
   }
-  if (!args.every((a) => Number.isFinite(a) && Math.abs(a) <= 64)) {
-    throw new InvalidInputError(`shape ${name}: its arguments must be numbers up to 64 (a fixture is small)`);
+  if (!args.every((a) => Number.isFinite(a) && Math.abs(a) <= MAX_SHAPE_ARGUMENT)) {
+    throw new InvalidInputError(`shape ${name}: its arguments must be numbers up to ${MAX_SHAPE_ARGUMENT} (a fixture has at most ${MAX_FIXTURE_FACES.toLocaleString('en')} faces)`);
   }
   return (shapes[name] as (...a: number[]) => PolygonSoup)(...args);
 }

@@ -3,10 +3,12 @@
  * page passes a runner that uses a sandbox worker, the CLI one that uses a worker thread; both
  * hand back one `RunOutput` per fixture, and everything else happens here, the same everywhere.
  */
+import { inWriteOrder } from '../change.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { type Exercise, type ExerciseInput, fixtureMesh, frozenInput } from './exercise.js';
 import { type Check, type FixtureResult, gradeFixture } from './grade.js';
 import type { RunOutput } from './run.js';
+import { writeOrderOf } from './what-to-fix.js';
 import { replayWrites } from './writes.js';
 
 export interface FixtureRun {
@@ -66,18 +68,22 @@ async function gradeOn(exercise: Exercise, meshes: HalfedgeMesh[], source: strin
   return { exercise: exercise.id, passed: checks.every((c) => c.passed), score, maxScore: checks.length, checks, fixtures };
 }
 
-/** What the reference answers and leaves on each fixture (the library's function, or a reference solution run like any other). */
-async function referenceResults(exercise: Exercise, runs: FixtureRun[], run: SolutionRunner): Promise<{ value: unknown; mesh: HalfedgeMesh }[]> {
+/**
+ * What the reference answers and leaves on each fixture (the library's function, or a reference
+ * solution run like any other), and the fields it wrote, in order.
+ */
+async function referenceResults(exercise: Exercise, runs: FixtureRun[], run: SolutionRunner): Promise<{ value: unknown; mesh: HalfedgeMesh; order: number[] }[]> {
   const reference = exercise.reference;
   if (typeof reference === 'function') {
     return runs.map(({ mesh, input }) => {
       const copy = mesh.clone();
-      return { value: reference(copy, input), mesh: copy };
+      const { value, fields } = inWriteOrder(copy, () => reference(copy, input));
+      return { value, mesh: copy, order: fields };
     });
   }
   const outputs = await run(reference, runs);
   return outputs.map((output, i) => {
     if (output.error) throw new Error(`the exercise's reference fails on fixture "${exercise.fixtures[i].name}": ${output.error.message}`);
-    return { value: output.value, mesh: replayWrites(runs[i].mesh.clone(), output.writes) };
+    return { value: output.value, mesh: replayWrites(runs[i].mesh.clone(), output.writes), order: writeOrderOf(output.writes) };
   });
 }

@@ -2,7 +2,8 @@
  * Grading one fixture from what the sandbox reported: the writes are replayed onto a copy of the
  * fixture (so nothing the solution did inside the sandbox is trusted but its log), the result is
  * validated and compared with the reference's, and when it is broken, the write after which the
- * first of its broken invariants began to fail is found by validating after every write.
+ * first of its broken invariants began to fail is found (`brokenSince`, which re-runs after each
+ * write only the checks that read what it wrote, so it is found at any size).
  *
  * ```
  *   writes:      w0   w1   w2   w3   w4   (end)
@@ -17,11 +18,13 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import { validate, type Violation } from '../validate.js';
+import { brokenSince } from './broken-since.js';
 import { compareAnswers, compareMeshes, compareTriangulation } from './compare.js';
 import type { Exercise, ExerciseInput, Fixture } from './exercise.js';
 import { checkProperties } from './properties.js';
 import type { RunOutput } from './run.js';
-import { applyWrite, describeWrite, type PracticeWrite, replayWrites } from './writes.js';
+import { whatToFix } from './what-to-fix.js';
+import { describeWrite, type PracticeWrite, replayWrites } from './writes.js';
 
 /**
  * `partial`: a hidden fixture (a hard case) the library handles, which the solution refused
@@ -87,21 +90,19 @@ export function checkNames(exercise: Exercise): string[] {
   return exercise.fixtures.flatMap((fixture) => fixtureChecks(exercise).map((what) => `${fixture.name}: ${what}`));
 }
 
-/** Above this many validations' worth of work (writes × halfedges), the first broken write is not searched. */
-const MAX_TRACE_WORK = 20_000_000;
-
 /**
  * The checks of one fixture. `before` is the fixture's mesh (not changed); `reference` is what the
- * reference answered and left. `partialCredit`: whether a hidden fixture the library handles and
- * the solution refused cleanly earns `PARTIAL_CREDIT` (it does once the solution passes every
- * fixture that is not hidden: refusing is worth something beside a working edit, not instead of one).
+ * reference answered and left, and the fields it wrote in order (`inWriteOrder`), when known.
+ * `partialCredit`: whether a hidden fixture the library handles and the solution refused cleanly
+ * earns `PARTIAL_CREDIT` (it does once the solution passes every fixture that is not hidden:
+ * refusing is worth something beside a working edit, not instead of one).
  */
 export function gradeFixture(
   exercise: Exercise,
   fixture: Fixture,
   before: HalfedgeMesh,
   output: RunOutput,
-  reference: { value: unknown; mesh: HalfedgeMesh },
+  reference: { value: unknown; mesh: HalfedgeMesh; order?: readonly number[] },
   partialCredit = true,
 ): FixtureResult {
   const after = replayWrites(before.clone(), output.writes);
@@ -138,6 +139,13 @@ export function gradeFixture(
     check('valid mesh', problems.length === 0 ? null : describeBroken(problems, firstBroken, output));
     const refusedNeedlessly = refusedCleanly && !libraryRefuses ? `your code returned ${String(refusal)} and changed nothing, but this case needs no refusing: the library does the edit` : null;
     check(outcome, failure ?? refusedNeedlessly ?? compareAnswers(exercise.answer, output.value, reference.value, after, reference.mesh) ?? compareResult(exercise, before, after, reference.mesh, fixture.input));
+    // what to change, from the pointers the reference sets: not where the code threw (that comes
+    // first), nor on a hidden fixture (it names ids), nor where more than one result is right (any
+    // triangulation's diagonals, a remeshing or a simplification judged by its properties)
+    const failed = checks.filter((c) => c.status === 'failed');
+    const oneAnswer = (exercise.compare ?? 'mesh') === 'mesh';
+    const hint = failed.length > 0 && !output.error && !fixture.hidden && oneAnswer ? whatToFix(before, after, output.writes, { mesh: reference.mesh, order: reference.order ?? [] }) : null;
+    if (hint) for (const c of failed) c.message += `. To fix: ${hint}`;
   }
   if (fixture.hidden) {
     for (const c of checks) {
@@ -196,35 +204,20 @@ function describeBroken(problems: Violation[], first: FirstBroken | null, output
   return `the mesh it leaves breaks an invariant: ${first.invariant}, since write ${first.write + 1}, ${describeWrite(write)}${first.line === null ? '' : ` at line ${first.line}`}${more}`;
 }
 
-function keyOf(v: Violation): string {
-  return `${v.invariant}|${v.halfedges ?? ''}|${v.vertices ?? ''}|${v.faces ?? ''}`;
-}
-
 /**
- * Replays the writes on a copy of `before`, validating after each, and returns the write after
- * which the earliest of the `final` violations began its last unbroken stretch of failing. Null
- * when the work would be too large (the fixture is big and the writes many).
+ * The write after which the earliest of the `final` violations began its last unbroken stretch of
+ * failing (the first of them, in `validate`'s order, among those that began at the same write).
+ * `final` is not empty. Null when one of them was failing before the first write (or there are none).
  */
 export function findFirstBroken(before: HalfedgeMesh, writes: readonly PracticeWrite[], final: Violation[]): FirstBroken | null {
-  if (writes.length === 0 || writes.length * before.halfedgeSlots > MAX_TRACE_WORK) return null;
-  const finalByKey = new Map(final.map((v) => [keyOf(v), v]));
-  const onset = new Map<string, number>();
-  let failing = new Set<string>(validate(before).map(keyOf).filter((k) => finalByKey.has(k)));
-  for (const key of failing) onset.set(key, -1);
-  const mesh = before.clone();
-  writes.forEach((write, i) => {
-    applyWrite(mesh, write);
-    const now = new Set(validate(mesh).map(keyOf).filter((k) => finalByKey.has(k)));
-    for (const key of now) if (!failing.has(key)) onset.set(key, i);
-    failing = now;
-  });
-  let best: [string, number] | null = null;
-  for (const [key, i] of onset) if (failing.has(key) && (!best || i < best[1])) best = [key, i];
-  if (!best || best[1] < 0) return null;
-  const violation = finalByKey.get(best[0])!;
+  const since = brokenSince(before, writes, final);
+  let first = 0;
+  for (let k = 1; k < final.length; k++) if (since[k] < since[first]) first = k;
+  if (since[first] < 0) return null;
+  const violation = final[first];
   return {
-    write: best[1],
-    line: writes[best[1]].line,
+    write: since[first],
+    line: writes[since[first]].line,
     invariant: violation.message,
     elements: { halfedges: violation.halfedges ?? [], vertices: violation.vertices ?? [], faces: violation.faces ?? [] },
   };

@@ -5,7 +5,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import { type ExerciseInput, frozenInput } from './exercise.js';
-import { DEFAULT_BUDGET, type PracticeBudget, type PracticeMesh, practiceMesh, type PracticeTrace } from './mesh-api.js';
+import { budgetFor, type PracticeBudget, type PracticeMesh, practiceMesh, type PracticeTrace } from './mesh-api.js';
 import { currentSolutionLine, solutionLine } from './source.js';
 
 export type Solution = (mesh: PracticeMesh, input: ExerciseInput | undefined) => unknown;
@@ -28,7 +28,7 @@ export interface RunOutput extends PracticeTrace {
  * Runs `solution` on `mesh` (changed in place by its writes). `lineOffset` is the number of lines
  * the engine puts before the compiled body (see `solutionLine`).
  */
-export function runSolution(solution: Solution, mesh: HalfedgeMesh, input: ExerciseInput | undefined, lineOffset: number, budget: PracticeBudget = DEFAULT_BUDGET): RunOutput {
+export function runSolution(solution: Solution, mesh: HalfedgeMesh, input: ExerciseInput | undefined, lineOffset: number, budget: PracticeBudget = budgetFor(mesh)): RunOutput {
   const lineOf = () => currentSolutionLine(lineOffset);
   const { api, trace } = practiceMesh(mesh, lineOf, budget);
   try {

@@ -11,6 +11,7 @@
  */
 import type { PointerChange } from '../diff.js';
 import type { HalfedgeMesh } from '../mesh.js';
+import { type ElementKind, slotCount } from '../mesh-arrays.js';
 
 /** The pointer fields a solution writes, named as the mesh API names them. */
 export type PointerWriteField = 'next' | 'prev' | 'origin' | 'face' | 'vertexHalfedge' | 'faceHalfedge';
@@ -57,10 +58,24 @@ export function applyWrite(mesh: HalfedgeMesh, write: PracticeWrite): void {
     case 'deleteFace':
       mesh.deleteFace(write.index);
       return;
-    default:
+    default: {
+      // the mesh API writes -1 or an element that exists (which the first-broken search relies on)
+      const kind = pointerKindOf[write.field];
+      if (write.new < -1 || write.new >= slotCount(mesh, kind)) throw new Error(`replaying ${describeWrite(write)}: there is no ${kind} ${write.new} yet`);
       mesh[pointerArrayOf[write.field]][write.index] = write.new;
+    }
   }
 }
+
+/** The kind of element each pointer field names. */
+const pointerKindOf = {
+  next: 'halfedge',
+  prev: 'halfedge',
+  origin: 'vertex',
+  face: 'face',
+  vertexHalfedge: 'halfedge',
+  faceHalfedge: 'halfedge',
+} as const satisfies Record<PointerWriteField, ElementKind>;
 
 /** `mesh` after the first `count` writes (all of them by default), applied in place. */
 export function replayWrites(mesh: HalfedgeMesh, writes: readonly PracticeWrite[], count = writes.length): HalfedgeMesh {
