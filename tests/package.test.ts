@@ -101,7 +101,7 @@ describe('the packed package in a fresh project', () => {
   it('writes a course autograder with the grader built into the package', () => {
     writeFileSync(join(project, 'COURSE.json'), JSON.stringify({ exercises: [{ id: 'flip-edge', file: 'flip-edge.js', points: 5 }] }));
     const made = run(join(project, 'node_modules/.bin/halfedge-lab'), ['autograder', 'COURSE.json', '--out', 'autograder.zip'], project);
-    expect(made).toContain('wrote autograder.zip: 1 exercise, 10 tests, 5 points');
+    expect(made).toContain('wrote autograder.zip: 1 exercise, 16 tests, 5 points');
     expect(existsSync(join(project, 'node_modules/halfedge-lab/dist/grader/grader.mjs'))).toBe(true);
     const names = readFileSync(join(project, 'autograder.zip')).toString('latin1');
     for (const name of ['setup.sh', 'run_autograder', 'grader.mjs', 'course.json']) expect(names).toContain(name);
