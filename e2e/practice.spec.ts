@@ -158,7 +158,7 @@ test.describe('practice mode', () => {
     await page.getByRole('button', { name: 'Use my code' }).click();
     await expect(page.getByRole('button', { name: 'Use my code' })).toHaveAttribute('aria-pressed', 'true');
     expect(await page.evaluate(() => window.halfedgeLab.edit({ kind: 'flip-edge', edge: 10 }))).toBeNull();
-    await expect(page.locator('#status')).toHaveText(/^Your code broke the mesh \(v\d+'s halfedge h\d+ does not start at v\d+, since write \d+, origin\(h\d+\) = v\d+ at line 2[34]\); the mesh stays as it was\.$/);
+    await expect(page.locator('#status')).toHaveText(/^Your code broke the mesh, so it stays as it was: v\d+'s halfedge h\d+ does not start at v\d+, since write \d+, origin\(h\d+\) = v\d+ at line 2[34]\. To fix: the reference sets v\d+'s halfedge to h\d+ .*\.$/);
     await expect(page.locator('.practice-broken')).toContainText(/First broken: v\d+'s halfedge/);
     let state = await page.evaluate(() => window.halfedgeLab.state());
     expect(state.lastEdit).toMatchObject({ kind: 'flip-edge', by: 'solution' });

@@ -1,8 +1,8 @@
 /**
  * The tests that measure time (a frame counter while a file loads, a clock on an endless loop)
- * or move tens of megabytes into the page. They run alone, after every other browser test
- * (the `timed` project in playwright.config.ts): beside another browser on a two-core machine
- * their clocks would measure the neighbour.
+ * or move tens of megabytes into the page. They run last, after every other browser test (the
+ * `timed` project in playwright.config.ts), so that nothing else the suite does is still winding
+ * down when their clocks start.
  */
 import { expect, test } from '@playwright/test';
 import { uvSphere, writeSoup } from '../src/index.js';

@@ -123,7 +123,7 @@ export class PracticePanel {
     // the task, the code, and what a run found
     replace(
       container,
-      el('div', { class: 'practice-brief' }, el('label', { class: 'practice-pick' }, 'Exercise ', this.select), this.task, el('div', { class: 'practice-hint-row' }, this.hintButton), this.hints),
+      el('div', { class: 'practice-brief' }, el('label', { class: 'practice-pick' }, 'Exercise ', this.select), this.task, el('div', { class: 'practice-hint-row' }, this.hintButton, ' ', this.useMineButton), this.hints),
       el(
         'div',
         { class: 'practice-code' },
@@ -134,7 +134,6 @@ export class PracticePanel {
           this.runButton,
           el('button', { type: 'button', 'aria-label': 'Start again from the starter code', onclick: () => this.setCode(this.exercise.starter) }, 'Starter code'),
           el('button', { type: 'button', 'aria-label': 'Export all solutions as one file', onclick: () => this.exportSolutions() }, 'Export'),
-          this.useMineButton,
         ),
       ),
       el('div', { class: 'practice-results' }, this.summary, this.checks, this.broken, this.writes, this.reads),
@@ -226,7 +225,7 @@ export class PracticePanel {
     this.drawBroken(result.firstBroken, 0);
     this.drawWrites(0);
     const refusal = this.exercise.refusal;
-    if (!valid.passed) return { mesh: null, writes: result.writes, message: `Your code broke the mesh (${valid.message.replace(/^the mesh it leaves breaks an invariant: /, '')}); the mesh stays as it was.` };
+    if (!valid.passed) return { mesh: null, writes: result.writes, message: `Your code broke the mesh, so it stays as it was: ${valid.message.replace(/^the mesh it leaves breaks an invariant: /, '')}.` };
     if (result.writes.length === 0) {
       const refused = refusal !== undefined ? ` (it returned ${String(refusal)})` : '';
       return { mesh: null, writes: [], message: `Your code changed nothing${refused}: ${label} stays undone.` };
