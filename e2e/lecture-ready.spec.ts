@@ -71,6 +71,34 @@ test.describe('the key help', () => {
   }
 });
 
+test('the keys, the toolbar buttons, the help and the automation come from one table of commands', async ({ page }) => {
+  await openApp(page, 'torus.off');
+  const listed = await page.evaluate(() => window.halfedgeLab.commands());
+  const topView = listed.find((c) => c.name === 'top-view')!;
+  expect(topView).toMatchObject({ keys: ['o'], label: 'Top view', unavailable: null });
+  // the button's name, key and tooltip are the table's
+  const button = page.locator('#top-view');
+  await expect(button).toHaveAccessibleName('Top view');
+  await expect(button).toHaveAttribute('aria-keyshortcuts', 'O');
+  await expect(button).toHaveAttribute('title', `${topView.help.charAt(0).toUpperCase()}${topView.help.slice(1)} (O)`);
+  // the command runs as its key and its button do
+  expect(await page.evaluate(() => window.halfedgeLab.command('top-view'))).toBeNull();
+  await expect(button).toHaveAttribute('aria-pressed', 'true');
+  await page.keyboard.press('o');
+  await expect(button).toHaveAttribute('aria-pressed', 'false');
+  // one part: the exploded view does not apply, and running it says why
+  const why = await page.evaluate(() => window.halfedgeLab.command('explode'));
+  expect(why).toMatch(/one connected part/);
+  await expect(page.locator('#status')).toHaveText(`Explode parts is not available: ${why}.`);
+  await expect(page.evaluate(() => window.halfedgeLab.command('fly'))).rejects.toThrow(/there is no command 'fly' \(commands: walk-next, /);
+  // under the target naming, the help's V line says the vertex it walks to is the target
+  await page.evaluate(() => window.halfedgeLab.setConvention('target'));
+  await page.keyboard.press('?');
+  await expect(page.locator('#help-keys .key-row', { hasText: /^V/ })).toHaveText('Vtarget: the vertex the halfedge points to');
+  await expect(page.locator('#help-keys .key-row', { hasText: /^R/ })).toContainText('rotate clockwise around the vertex the halfedge starts from');
+  expect(await page.locator('#help-keys .key-row').count()).toBe(listed.filter((c) => c.keys.length > 0).length);
+});
+
 test('after a file is opened from the picker, the keys work at once', async ({ page }) => {
   await openApp(page, 'disk.off');
   const input = page.locator('#file-input');

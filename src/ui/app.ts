@@ -42,6 +42,7 @@ import { repairStory } from './repair-story.js';
 import { ViewDetail } from './view-detail.js';
 import { cutPlaneOnShow, explodedMesh, explodedRender, explodeOffsets } from './explode.js';
 import { adjustable, DragAdjust } from './drag-adjust.js';
+import { type CommandTarget, commands, displayKey } from './commands.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, openedEntry, type ReplayStep, replayable, type ViewState } from './share.js';
@@ -99,6 +100,8 @@ export class App {
   message = '';
   /** The last edit (or operation the student's code did): its kind, whose code made it, and how many pointer writes. */
   lastEdit: { kind: string; by: 'solution' | 'library'; writes: number } | null = null;
+  /** What the commands (keys, toolbar buttons, `command(name)`) reach of the app: see commands.ts. */
+  readonly commandTarget: CommandTarget = commandTargetOf(this);
   /** After an extrusion or a bevel, a drag on the view sets its offset or amount (see drag-adjust.ts). */
   readonly adjust = new DragAdjust(
     (request) => this.editAgain(request),
@@ -234,7 +237,7 @@ export class App {
       },
     });
     this.drawLegend();
-    renderHelp(this.byId('help-keys'));
+    renderHelp(this.byId('help-keys'), this.inspection.convention);
     renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), this.inspection.convention);
     wireControls(this, { root: this.root, input: this.input, canvas: this.viewer.renderer.domElement, quickToPick: () => this.surface.quickToPick });
     if (this.panels) this.embed(this.panels);
@@ -532,8 +535,18 @@ export class App {
     this.byId('explode').setAttribute('aria-pressed', String(this.exploded));
   }
 
+  /** A command's button that may not apply: marked so, its tooltip saying why (see commands.ts). */
+  private drawCommandButtons(): void {
+    for (const command of commands) {
+      if (!command.button || !command.unavailable) continue;
+      const keys = command.keys.map(displayKey).join(', ');
+      const tip = `${capitalized(command.help(this.inspection.convention))}${keys ? ` (${keys})` : ''}`;
+      setAvailability(this.byId<HTMLButtonElement>(command.button.id), command.button.label, command.unavailable(this.commandTarget), tip);
+    }
+  }
+
   /** Why the exploded view does not apply to the mesh on show (its button's tooltip), or null when it does. */
-  private explodeUnavailable(): string | null {
+  explodeUnavailable(): string | null {
     const snapshot = this.snapshot;
     if (!snapshot) return 'no mesh is open';
     const { render, stats, pending } = snapshot;
@@ -913,6 +926,7 @@ export class App {
     // everything that names the vertex of a halfedge speaks the naming chosen
     this.drawLegend();
     renderWalkButtons(this.byId('walk-buttons'), (move) => this.walk(move), convention);
+    renderHelp(this.byId('help-keys'), convention);
     if (this.quiz.active) this.quiz.ask();
     if (this.snapshot) this.tables.setMesh(this.snapshot.mesh, convention, this.snapshot.idsVersion);
     this.drawSelection();
@@ -991,7 +1005,7 @@ export class App {
     renderInspector(this.byId('record'), this.byId('convention-note'), this.mesh, this.inspection.selection, this.inspection.convention, follow);
     renderBreadcrumb(this.byId('breadcrumb'), this.inspection.path, this.scale > 1 ? PRESENTATION_BREADCRUMB_STEPS : undefined);
     if (this.mesh && snapshot) this.operations.update(this.mesh, this.inspection.selection, snapshot.unavailable);
-    setAvailability(this.byId('explode'), 'Explode parts', this.explodeUnavailable(), 'Draw the parts of the mesh pulled apart, to see each one (B)');
+    this.drawCommandButtons();
     if (snapshot) {
       renderHud(this.byId('hud'), snapshot.stats, snapshot.problems, this.boundaryLoops(), {
         select: (s) => this.select(s),
@@ -1070,4 +1084,45 @@ function revealInPanel(element: Element): void {
   const top = panel.top + (side.querySelector('.side-tabs')?.getBoundingClientRect().height ?? 0);
   if (box.bottom > panel.bottom) side.scrollTop += Math.min(box.bottom - panel.bottom, box.top - top);
   else if (box.top < top) side.scrollTop -= top - box.top;
+}
+
+/** The app as the commands see it. */
+function commandTargetOf(app: App): CommandTarget {
+  return {
+    get convention() {
+      return app.inspection.convention;
+    },
+    get exploded() {
+      return app.exploded;
+    },
+    get helpShown() {
+      return app.helpShown;
+    },
+    get tablesShown() {
+      return app.tablesShown;
+    },
+    get presenting() {
+      return app.scale > 1;
+    },
+    walk: (move) => void app.walk(move),
+    back: () => app.back(),
+    select: () => app.select(null),
+    frameMesh: () => app.frameMesh(),
+    frameSelection: () => app.frameSelection(),
+    toggleTopView: () => app.toggleTopView(),
+    explodeUnavailable: () => app.explodeUnavailable(),
+    setExploded: (on) => app.setExploded(on),
+    toggleIds: () => app.toggleIds(),
+    toggleOverlays: () => app.toggleOverlays(),
+    showTables: (show) => app.showTables(show),
+    toggleHelp: (show) => app.toggleHelp(show),
+    setPresentation: (on) => app.setPresentation(on),
+    shareLink: () => app.shareLink(),
+    request: (verb) => app.request(verb),
+    askQuiz: () => {
+      app.showTab('quiz');
+      app.quiz.ask();
+    },
+    say: (message) => app.say(message, 'alert'),
+  };
 }

@@ -7,6 +7,7 @@ import type { PageSnapshot } from '../workers/page-copy.js';
 import { type HalfedgeMesh, meshArrays } from '../core/index.js';
 import { type Snapshot, type SnapshotVerbs, type StudentVerb, studentVerbNames } from '../workers/protocol.js';
 import type { App } from './app.js';
+import { commandNamed, commands, runCommand } from './commands.js';
 import { recordOf } from './records.js';
 import { type ElementKind, elementName, type Move, parseElementName, type Selection } from './selection.js';
 import { newPlacement, placeArrow } from './scene/arrow-placement.js';
@@ -96,6 +97,19 @@ export function automation(app: App) {
       Promise<{ version: number } | null>,
       StudentVerb
     >),
+    /**
+     * The app's commands, from the one table the keys, the buttons and the help are made from
+     * (commands.ts): each `{ name, keys, label, help, unavailable }` (`label`: its button's name, or
+     * null; `unavailable`: null, or why it does not apply now).
+     */
+    commands: () =>
+      commands.map((c) => ({ name: c.name, keys: c.keys, label: c.button?.label ?? null, help: c.help(app.inspection.convention), unavailable: c.unavailable?.(app.commandTarget) ?? null })),
+    /** Runs a command by name, as its key or button does; null when it ran, else why it does not apply now (said on the page too). */
+    command: (name: string) => {
+      const found = commandNamed(name);
+      if (!found) throw new Error(`there is no command '${name}' (commands: ${commands.map((c) => c.name).join(', ')})`);
+      return runCommand(app.commandTarget, found);
+    },
     /** The link "Copy link" copies (and copies it): the sample, the steps since it, the selection, the camera. */
     shareLink: () => app.shareLink(),
     /** The quiz: `ask()` a new question; `question()` the current one, with its answer (for tests). */

@@ -1,12 +1,11 @@
 /**
  * How the page reaches the app: its buttons and menus, files picked or dropped, clicks and hovers
- * on the canvas, and the keys (whose table is keys.ts). Only wiring: each control calls one of
- * the app's methods, which the automation interface and the keys call as well.
+ * on the canvas, and the keys. Only wiring: a key or a toolbar button runs a command of the table
+ * in commands.ts (which the automation runs too); a menu or a file calls the app.
  */
 import type { App } from './app.js';
+import { type Command, commands, displayKey, handleKey, runCommand } from './commands.js';
 import { byId } from './dom.js';
-import { handleKey } from './keys.js';
-import { whenAvailable } from './panels/operations.js';
 import type { Convention } from './records.js';
 import type { PickFilter } from './scene/picking.js';
 
@@ -55,17 +54,10 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
   });
   onChange('pick-filter', (filter) => (app.filter = filter as PickFilter));
   onChange('convention', (convention) => app.setConvention(convention as Convention));
-  onClick('frame-mesh', () => app.frameMesh());
-  onClick('frame-selection', () => app.frameSelection());
-  onClick('top-view', () => app.toggleTopView());
-  find('explode').addEventListener('click', whenAvailable(() => app.setExploded(!app.exploded)));
-  onClick('show-ids', () => app.toggleIds());
-  onClick('tables-fold', () => app.showTables(!app.tablesShown));
-  onClick('walk-back', () => app.back());
-  onClick('cancel', () => void app.request('cancel'));
-  onClick('presentation', () => app.setPresentation(app.scale === 1));
-  onClick('share', () => app.shareLink());
-  onClick('help', () => app.toggleHelp());
+  // each command's button: named, with its key in its tooltip, running the command
+  for (const command of commands) {
+    if (command.button) wireButton(find<HTMLButtonElement>(command.button.id), command, app);
+  }
   onClick('help-close', () => app.toggleHelp(false));
   onClick('error-dismiss', () => (find('error-panel').hidden = true));
   for (const tab of tabs) onClick(`tab-${tab}`, () => app.showTab(tab));
@@ -124,9 +116,22 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
     const origin = event.composedPath()[0];
     if (origin instanceof Element && origin.closest(FIELDS)) return;
     app.adjust.end();
-    if (!handleKey(app, event)) return;
+    if (!handleKey(app.commandTarget, event)) return;
     event.preventDefault();
     // a key this view used is not also the slide deck's around it (N is "next slide" in reveal.js)
     event.stopPropagation();
   });
+}
+
+/** A command's button: its name and tooltip from the table; a click runs the command (or says why it does not apply). */
+function wireButton(button: HTMLButtonElement, command: Command, app: App): void {
+  const keys = command.keys.map(displayKey).join(', ');
+  button.setAttribute('aria-label', command.button!.label);
+  if (keys) button.setAttribute('aria-keyshortcuts', command.keys.map(displayKey).join(' '));
+  button.title = `${capitalised(command.help(app.inspection.convention))}${keys ? ` (${keys})` : ''}`;
+  button.addEventListener('click', () => runCommand(app.commandTarget, command));
+}
+
+function capitalised(text: string): string {
+  return text.charAt(0).toUpperCase() + text.slice(1);
 }

@@ -1,24 +1,19 @@
 /**
- * Walk buttons (each with its key) and the breadcrumb of the path walked.
+ * Walk buttons (each with its key, from the table of commands) and the breadcrumb of the path walked.
  */
+import { type Command, commands, displayKey } from '../commands.js';
 import { el, replace } from '../dom.js';
 import type { Convention } from '../records.js';
 import { breadcrumbText, type Move, type WalkStep } from '../selection.js';
 
-/** The walk buttons; the vertex one walks to the vertex the naming names (V: origin or target). */
+/** The walk buttons: the walk commands; the vertex one walks to the vertex the naming names (V: origin or target). */
 export function walkButtons(convention: Convention): Array<{ move: Move; key: string; label: string; title: string }> {
-  const vertex = convention === 'origin' ? 'the vertex the halfedge starts from' : 'the vertex the halfedge points to';
-  return [
-    { move: 'next', key: 'N', label: 'next', title: 'next: the following halfedge around the same face' },
-    { move: 'prev', key: 'P', label: 'prev', title: 'prev: the previous halfedge around the same face' },
-    { move: 'twin', key: 'T', label: 'twin', title: 'twin: the opposite halfedge of the same edge' },
-    { move: 'face', key: 'F', label: 'face', title: 'face: the face on the left' },
-    { move: convention, key: 'V', label: convention, title: `${convention}: ${vertex}` },
-    { move: 'edge', key: 'E', label: 'edge', title: 'edge: the edge this halfedge is half of' },
-    { move: 'halfedge', key: 'H', label: 'halfedge', title: 'halfedge: the halfedge a vertex, face or edge points to' },
-    { move: 'twin.next', key: 'R', label: 'twin.next', title: 'twin.next: rotate clockwise around the vertex the halfedge starts from' },
-    { move: 'prev.twin', key: 'L', label: 'prev.twin', title: 'prev.twin: rotate counter-clockwise around the vertex the halfedge starts from' },
-  ];
+  return commands
+    .filter((command): command is Command & { move: (c: Convention) => Move } => command.move !== undefined)
+    .map((command) => {
+      const move = command.move(convention);
+      return { move, key: displayKey(command.keys[0]!), label: move, title: command.help(convention) };
+    });
 }
 
 export function renderWalkButtons(container: HTMLElement, go: (move: Move) => void, convention: Convention): void {
