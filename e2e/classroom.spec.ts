@@ -117,7 +117,7 @@ test.describe('the classroom', () => {
     await page.screenshot({ path: testInfo.outputPath('presentation.png') });
     await page.keyboard.press('?');
     await expect(page.getByRole('dialog', { name: 'Keys' })).toBeVisible();
-    await expect(page.getByRole('dialog', { name: 'Keys' })).toContainText('walk to next / prev / twin');
+    await expect(page.getByRole('dialog', { name: 'Keys' })).toContainText('next: the following halfedge around the same face');
     await page.screenshot({ path: testInfo.outputPath('help.png') });
     await page.keyboard.press('Escape');
     await expect(page.getByRole('dialog', { name: 'Keys' })).toBeHidden();
