@@ -35,7 +35,8 @@ test.describe('loading a large file', () => {
 
   test('cancels a load in progress, keeping the previous mesh', async ({ page }) => {
     await openApp(page, 'cube.off');
-    const big = writeSoup(uvSphere(500, 1000), 'ply');
+    // ascii, so that reading it takes long enough to cancel, and no larger than that needs
+    const big = writeSoup(uvSphere(300, 600), 'ply');
     await page.locator('#file-input').setInputFiles({ name: 'huge.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(big) });
     await page.getByRole('button', { name: 'Cancel' }).click();
     await expect(page.locator('#status')).toContainText('previous mesh stays');
