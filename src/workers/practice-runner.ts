@@ -70,10 +70,7 @@ function runSome(port: SandboxPort, source: string, runs: FixtureRun[], hardMarg
     };
     port.listen(
       (message) => {
-        // the clock starts once the sandbox runs: loading a worker is not the student's time
-        // (from source, under load, it alone took past the limit)
-        if (message.kind === 'started') arm();
-        else if (message.kind === 'refused') {
+        if (message.kind === 'refused') {
           clearTimeout(timer);
           port.terminate();
           reject(new SolutionError(message.message, message.line));
@@ -86,6 +83,7 @@ function runSome(port: SandboxPort, source: string, runs: FixtureRun[], hardMarg
       },
       (error) => finish({ output: stoppedOutput(`your code was stopped: ${error.message}`), terminated: false }),
     );
+    arm();
     port.post({ source, runs: runs.map(({ mesh, input }) => ({ mesh: serializeMesh(mesh), input })) });
   });
 }

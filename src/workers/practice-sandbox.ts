@@ -26,8 +26,6 @@ export interface SandboxRequest {
 }
 
 export type SandboxMessage =
-  /** The sandbox has loaded and begins the request: the runner's clock starts here, not at the post. */
-  | { kind: 'started' }
   | { kind: 'output'; index: number; output: RunOutput }
   | { kind: 'refused'; message: string; line: number | null }
   | { kind: 'done' };
@@ -142,7 +140,6 @@ function compileSolution(source: string): Solution {
 
 /** Answers one request: compiles, runs on every fixture in turn, and says each output as it comes. */
 export function serveRequest(request: SandboxRequest, send: (message: SandboxMessage) => void): void {
-  send({ kind: 'started' });
   let solution: Solution;
   try {
     solution = compileSolution(request.source);
