@@ -6,7 +6,32 @@
  */
 import { expect, test } from '@playwright/test';
 import { uvSphere, writeSoup } from '../src/index.js';
-import { openApp, openAppAt, typeAndRun } from './helpers.js';
+import { openApp, openAppAt } from './helpers.js';
+
+// the clock on an endless loop first: after the large files, the browser is still collecting them
+test.describe('practice mode', () => {
+  test('an endless loop is stopped within 3 s while the page keeps drawing', async ({ page }) => {
+    await openAppAt(page, '/?exercise=vertex-degree');
+    await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
+    const frames = page.evaluate(
+      () =>
+        new Promise<number>((resolve) => {
+          let count = 0;
+          const start = performance.now();
+          const tick = () => (performance.now() - start < 2000 ? (count++, requestAnimationFrame(tick)) : resolve(count));
+          requestAnimationFrame(tick);
+        }),
+    );
+    await page.evaluate((code) => window.halfedgeLab.practice.setCode(code), 'export default function (mesh, v) {\n  while (true) {}\n}\n');
+    // from the press of Run: typing the code is not the loop's time
+    const started = Date.now();
+    await page.getByRole('button', { name: 'Run the solution' }).click();
+    await expect(page.locator('.practice-summary')).toHaveText('0 of 4 checks pass.', { timeout: 10_000 });
+    expect(Date.now() - started).toBeLessThan(3500);
+    expect(await frames).toBeGreaterThan(20);
+    await expect(page.locator('.practice-checks')).toContainText('your code ran for 2.5 s without returning');
+  });
+});
 
 test.describe('loading a large file', () => {
   test('keeps the page drawing while a large file is parsed off the main thread', async ({ page }) => {
@@ -43,27 +68,5 @@ test.describe('loading a large file', () => {
     const state = await page.evaluate(() => window.halfedgeLab.state());
     expect(state.file?.name).toBe('cube.off');
     expect(state.stats?.faces).toBe(6);
-  });
-});
-
-test.describe('practice mode', () => {
-  test('an endless loop is stopped within 3 s while the page keeps drawing', async ({ page }) => {
-    await openAppAt(page, '/?exercise=vertex-degree');
-    await expect(page.locator('.practice-editor .cm-editor')).toBeVisible();
-    const frames = page.evaluate(
-      () =>
-        new Promise<number>((resolve) => {
-          let count = 0;
-          const start = performance.now();
-          const tick = () => (performance.now() - start < 2000 ? (count++, requestAnimationFrame(tick)) : resolve(count));
-          requestAnimationFrame(tick);
-        }),
-    );
-    const started = Date.now();
-    await typeAndRun(page, 'export default function (mesh, v) {\n  while (true) {}\n}\n');
-    await expect(page.locator('.practice-summary')).toHaveText('0 of 4 checks pass.', { timeout: 10_000 });
-    expect(Date.now() - started).toBeLessThan(3500);
-    expect(await frames).toBeGreaterThan(20);
-    await expect(page.locator('.practice-checks')).toContainText('your code ran for 2.5 s without returning');
   });
 });
