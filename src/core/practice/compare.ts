@@ -159,10 +159,14 @@ export function compareTriangulation(yours: HalfedgeMesh, reference: HalfedgeMes
   return null;
 }
 
-/** The corners of face `f`, from its halfedge (bounded by the mesh's size). */
+/** The corners of face `f`, from its halfedge. */
 function faceCorners(mesh: HalfedgeMesh, f: number): number[] {
+  return loopCorners(mesh, mesh.fHalfedge[f]);
+}
+
+/** The corners along `next` from halfedge `start` (bounded by the mesh's size). */
+export function loopCorners(mesh: HalfedgeMesh, start: number): number[] {
   const corners: number[] = [];
-  const start = mesh.fHalfedge[f];
   let h = start;
   do {
     corners.push(mesh.heVertex[h]);
@@ -171,7 +175,6 @@ function faceCorners(mesh: HalfedgeMesh, f: number): number[] {
   return corners;
 }
 
-/** True when the vertices of `part` come in `cycle` in the same cyclic order (not necessarily next to each other). */
 function inOrderAround(cycle: number[], part: number[]): boolean {
   const at = part.map((v) => cycle.indexOf(v));
   if (at.some((i) => i < 0)) return false;

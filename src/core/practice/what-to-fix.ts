@@ -20,7 +20,7 @@
 import { faceHalfedges, vertexOutgoingHalfedges } from '../circulators.js';
 import { meshArrayIndex, meshArrays, slotCount } from '../mesh-arrays.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { nearestVertexIn, sameSpotTolerance } from './compare.js';
+import { loopCorners, nearestVertexIn, sameSpotTolerance } from './compare.js';
 import { describeWrite, pointerArrayOf, type PointerWriteField, type PracticeWrite } from './writes.js';
 
 /** What the reference left, and the fields it wrote (`16 · index + array`) in the order it wrote them. */
@@ -187,7 +187,7 @@ class Places {
     if (kind === 'vertex') return ` (at (${yours.position(id).map((x) => Math.round(x * 1e4) / 1e4).join(', ')}))`;
     if (kind === 'halfedge') return ` (v${yours.heVertex[id]} → v${yours.heVertex[id ^ 1]})`;
     const start = yours.fHalfedge[id];
-    return live(yours, 'halfedge', start) ? ` (${cornersOf(yours, start).map((v) => `v${v}`).join(' → ')})` : '';
+    return live(yours, 'halfedge', start) ? ` (${loopCorners(yours, start).map((v) => `v${v}`).join(' → ')})` : '';
   }
 
   /**
@@ -226,17 +226,6 @@ class Places {
 function live(mesh: HalfedgeMesh, kind: Kind, id: number): boolean {
   if (!(id >= 0 && id < slotCount(mesh, kind))) return false;
   return kind === 'vertex' ? mesh.vDeleted[id] === 0 : kind === 'face' ? mesh.fDeleted[id] === 0 : mesh.eDeleted[id >> 1] === 0;
-}
-
-/** The corners along `next` from halfedge `start` (bounded by the mesh's size). */
-function cornersOf(mesh: HalfedgeMesh, start: number): number[] {
-  const corners: number[] = [];
-  let h = start;
-  do {
-    corners.push(mesh.heVertex[h]);
-    h = mesh.heNext[h];
-  } while (h !== start && h >= 0 && corners.length <= mesh.halfedgeSlots);
-  return corners;
 }
 
 /** The solution's last write to `array[index]`, or null. */
