@@ -1,8 +1,7 @@
-import { expect, type Page, test } from '@playwright/test';
+import { expect, test } from '@playwright/test';
 import { grid, writeSoup } from '../src/index.js';
-import { appErrors, openApp } from './helpers.js';
+import { appErrors, openApp, stats } from './helpers.js';
 
-const stats = (page: Page) => page.evaluate(() => window.halfedgeLab.state().stats!);
 
 test.describe("the assignment's local operations in Operate", () => {
   test('extrude, bevel, collapse a face and make a hole from the buttons, each undone, at 1280 × 720', async ({ page }, testInfo) => {

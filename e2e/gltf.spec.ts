@@ -1,12 +1,11 @@
 import { readFileSync } from 'node:fs';
 import { Document, NodeIO } from '@gltf-transform/core';
-import { expect, type Page, test } from '@playwright/test';
+import { expect, test } from '@playwright/test';
 import { readMeshAsync } from '../src/core/io/index.js';
 import { buildMesh } from '../src/index.js';
 import { addCube, addSphere, glbOf } from '../tests/io/gltf-fixtures.js';
-import { appErrors, openApp } from './helpers.js';
+import { appErrors, openApp, stats } from './helpers.js';
 
-const stats = (page: Page) => page.evaluate(() => window.halfedgeLab.state().stats!);
 
 function scene(): Document {
   const document = new Document();

@@ -1,6 +1,15 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from '@playwright/test';
 
+/**
+ * The counts of the mesh on show, once they are complete: after a change that reached the page as
+ * a patch, the full pass (components, genus, closed) arrives a moment after the change is drawn.
+ */
+export async function stats(page: Page) {
+  await page.waitForFunction(() => !window.halfedgeLab.state().pending);
+  return page.evaluate(() => window.halfedgeLab.state().stats!);
+}
+
 /** Opens the app (optionally on a sample model, optionally from another server) and waits for the first mesh. */
 export async function openApp(page: Page, model?: string, origin = ''): Promise<void> {
   await openAppAt(page, `${origin}/${model ? `?model=${encodeURIComponent(model)}` : ''}`);

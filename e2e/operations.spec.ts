@@ -1,9 +1,8 @@
 import { readFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
 import { cube, mergeSoups, torus, writeSoup } from '../src/index.js';
-import { clickCanvas, openApp } from './helpers.js';
+import { clickCanvas, openApp, stats } from './helpers.js';
 
-const stats = (page: Page) => page.evaluate(() => window.halfedgeLab.state().stats!);
 
 type Box = { left: number; top: number; right: number; bottom: number };
 const area = (r: Box) => Math.max(0, r.right - r.left) * Math.max(0, r.bottom - r.top);
@@ -234,6 +233,7 @@ test.describe('stepping operations, history and export', () => {
     // each side has its own copy of every corner of the cut, drawn on the other side's
     const twins = samePlace(await drawnAt(page, corners));
     expect(twins.flat().sort((a, b) => a - b)).toEqual(corners.map((_, i) => i));
+    await stats(page); // the full counts, which follow the last phase's patch
     const before = await lab(async () => ({ stats: window.halfedgeLab.state().stats, fingerprints: await window.halfedgeLab.fingerprints() }));
     expect(before.fingerprints.page).toBe(before.fingerprints.session);
 

@@ -13,8 +13,8 @@ import fc from 'fast-check';
 import { buildMesh } from '../src/core/build.js';
 import { cutMesh } from '../src/core/cut/index.js';
 import { cannotDecimate, decimate } from '../src/core/decimation/index.js';
-import { applyChange } from '../src/core/change.js';
-import { diffPointers } from '../src/core/diff.js';
+import { applyChange } from '../src/core/change/record.js';
+import { diffPointers } from '../src/core/change/diff.js';
 import { meshFingerprint } from '../src/core/fingerprint.js';
 import {
   bevelEdge,

@@ -7,7 +7,7 @@
  *   slots 0 1 2 3 4 5 6      dead [2, 5]      rows: 0→0  1→1  2→3  3→4  4→6
  * ```
  */
-import type { ChangeRecord } from './change.js';
+import type { ChangeRecord } from './change/record.js';
 import type { HalfedgeMesh } from './mesh.js';
 import { meshArrays, slotCount } from './mesh-arrays.js';
 
@@ -99,11 +99,12 @@ export class LiveIds {
 export function liveIdsTouched(change: ChangeRecord, kind: ListedKind): Int32Array {
   const flags = kind === 'vertex' ? 'vDeleted' : kind === 'face' ? 'fDeleted' : 'eDeleted';
   const ids: number[] = [];
+  const push = (id: number) => (kind === 'halfedge' ? ids.push(2 * id, 2 * id + 1) : ids.push(id));
   const { array, index } = change.pointers;
-  for (let i = 0; i < array.length; i++) {
-    if (meshArrays[array[i]].name !== flags) continue;
-    if (kind === 'halfedge') ids.push(2 * index[i], 2 * index[i] + 1);
-    else ids.push(index[i]);
+  for (let i = 0; i < array.length; i++) if (meshArrays[array[i]].name === flags) push(index[i]);
+  for (const range of change.ranges) {
+    if (meshArrays[range.array].name !== flags || !range.old) continue;
+    for (let i = 0; i < range.new.length; i++) if (range.old[i] !== range.new[i]) push(range.start + i);
   }
   const [low, high] = [slotCount(change.before, kind), slotCount(change.after, kind)].sort((a, b) => a - b);
   for (let id = low; id < high; id++) ids.push(id);

@@ -3,7 +3,7 @@
  * characteristic χ = V − E + F and, for each orientable component, its genus from
  * χ = 2 − 2g − b (b = number of boundary loops).
  */
-import type { ChangeRecord } from './change.js';
+import { type ChangeRecord, forEachPointerWrite } from './change/record.js';
 import { componentRoots } from './components.js';
 import { boundingBox, type BoundingBox, signedVolume, surfaceArea, triangleQuality, type TriangleQuality } from './geometry.js';
 import type { HalfedgeMesh } from './mesh.js';
@@ -174,19 +174,18 @@ const { heFace: FACE, eDeleted: EDGE_DELETED } = meshArrayIndex;
  */
 export function boundaryEdgesChange(mesh: HalfedgeMesh, record: ChangeRecord): number {
   const { before, after } = record;
-  const { array, index, old } = record.pointers;
   const faceBefore = new Map<number, number>();
   const deletedBefore = new Map<number, number>();
   const edges = new Set<number>();
-  for (let i = 0; i < array.length; i++) {
-    if (array[i] === FACE) {
-      faceBefore.set(index[i], old[i]);
-      edges.add(index[i] >> 1);
-    } else if (array[i] === EDGE_DELETED) {
-      deletedBefore.set(index[i], old[i]);
-      edges.add(index[i]);
+  forEachPointerWrite(record, (array, index, old) => {
+    if (array === FACE) {
+      faceBefore.set(index, old);
+      edges.add(index >> 1);
+    } else if (array === EDGE_DELETED) {
+      deletedBefore.set(index, old);
+      edges.add(index);
     }
-  }
+  });
 
   // a field the record does not write was as it is now; on a slot the change gave up, as a new
   // element starts (the change that brought it into use left it so: see applyChange)

@@ -17,7 +17,7 @@
  * up are not followed: nothing valid points to them. Every walk is bounded, so it terminates on
  * any mesh.
  */
-import { type ChangeRecord, type TouchedElements, touchedElements } from './change.js';
+import { type ChangeRecord, type TouchedElements, touchedElements } from './change/record.js';
 import {
   checkCycle,
   checkFace,
@@ -38,11 +38,11 @@ import { validate } from './validate.js';
  * elements costs tens of times what the whole pass does (sets and maps against flat arrays; a
  * change that rewrote all of 720k triangles took 8.8 s to check locally, 0.19 s with validate),
  * so the whole pass is the cheaper one once a change writes more than a sixteenth as many fields
- * as the mesh has halfedges.
+ * as the mesh has halfedges, or writes whole ranges (a phase).
  * @example const problems = validateChange(mesh, flipEdge(mesh, e).record!);
  */
 export function validateChange(mesh: HalfedgeMesh, record: ChangeRecord, options: ValidateOptions = {}): Violation[] {
-  if (16 * record.pointers.array.length > mesh.halfedgeSlots) return validate(mesh, options);
+  if (record.ranges.length > 0 || 16 * record.pointers.array.length > mesh.halfedgeSlots) return validate(mesh, options);
   return validateAround(mesh, touchedElements(record), options);
 }
 

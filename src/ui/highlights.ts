@@ -3,7 +3,8 @@
  * `twin`, `face` and `origin` together; for a vertex its outgoing halfedge and one-ring; for a face
  * its loop of halfedges. Pure: it returns a description the highlight layer draws.
  */
-import { type HalfedgeMesh, type Phase } from '../core/index.js';
+import type { HalfedgeMesh } from '../core/index.js';
+import type { ShownPhase } from '../workers/protocol.js';
 import { colors, hollowRoles, phaseColors } from './colors.js';
 import type { Convention } from './records.js';
 import { elementName, type Selection } from './selection.js';
@@ -88,18 +89,11 @@ export function hoverHighlight(s: Selection): HighlightSpec {
   return spec;
 }
 
-/** At most this many of each kind of element are drawn for a phase (a big mesh touches millions). */
-export const MAX_PHASE_MARKS = 5000;
-
 /** What a phase created, moved and rewired, in the stepper's colours (ids no longer there are skipped). */
-export function phaseHighlight(mesh: HalfedgeMesh, phase: Phase): HighlightSpec {
+export function phaseHighlight(mesh: HalfedgeMesh, phase: ShownPhase): HighlightSpec {
   const spec = emptyHighlight();
-  // the first live ones, without a pass over all of them (a smoothing step moves every vertex)
-  const take = (ids: Int32Array | undefined, alive: (id: number) => boolean) => {
-    const taken: number[] = [];
-    for (let i = 0; ids && i < ids.length && taken.length < MAX_PHASE_MARKS; i++) if (alive(ids[i])) taken.push(ids[i]);
-    return taken;
-  };
+  // the live ones (the phase lists at most PHASE_MARKS of each)
+  const take = (ids: Int32Array | undefined, alive: (id: number) => boolean) => (ids ? [...ids].filter(alive) : []);
   const vertexAlive = (v: number) => v < mesh.vertexSlots && !mesh.vDeleted[v];
   const halfedgeAlive = (h: number) => h < mesh.halfedgeSlots && !mesh.eDeleted[h >> 1];
   const faceAlive = (f: number) => f < mesh.faceSlots && !mesh.fDeleted[f];
@@ -109,7 +103,7 @@ export function phaseHighlight(mesh: HalfedgeMesh, phase: Phase): HighlightSpec 
   for (const e of take(phase.created?.edges, (e) => halfedgeAlive(mesh.edgeHalfedge(e)))) spec.edges.push({ id: e, color: phaseColors.created });
   // a mark on (nearly) every vertex says nothing, and hides the colours a phase puts on them (a
   // smoothing step moves every vertex and colours each by how far it went)
-  const movedMostly = phase.values?.vertices !== undefined && 2 * (phase.moved?.vertices?.length ?? 0) >= mesh.nVertices;
+  const movedMostly = phase.values?.vertices !== undefined && 2 * phase.movedCount >= mesh.nVertices;
   for (const v of take(movedMostly ? undefined : phase.moved?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.moved });
   for (const v of take(phase.created?.vertices, vertexAlive)) spec.vertices.push({ id: v, color: phaseColors.created });
   return spec;

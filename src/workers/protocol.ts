@@ -21,6 +21,7 @@ import {
   meshBuffers,
   type MeshStats,
   type Phase,
+  type PhaseElements,
   type PointerDiff,
   type SerializedMesh,
   type Violation,
@@ -95,6 +96,16 @@ export interface RenderBuffers {
   picking: { positions: Float32Array; triangles: Uint32Array } | null;
 }
 
+/** How many elements of each kind a shown phase lists as created, moved, rewired and removed (a big mesh's phase touches millions). */
+export const PHASE_MARKS = 5000;
+
+/**
+ * A phase as the page shows it: its name, explanation and values, and what it created, moved,
+ * rewired and removed (the first PHASE_MARKS of each), read off its record in the worker. The
+ * record itself comes as the snapshot's patch.
+ */
+export type ShownPhase = Omit<Phase, 'change'> & PhaseElements;
+
 /** A patch that writes more positions than this carries the bounds measured again; one that writes fewer, the page grows its own to take them in. */
 export const REBOUND_ABOVE = 4096;
 
@@ -117,6 +128,8 @@ export interface RenderPatch {
   picking: RenderWrite[] | null;
   /** The bounds again, when the patch writes more than REBOUND_ABOVE positions; else null. */
   bounds: BoundingSphere | null;
+  /** The room the page's buffers must have before the writes land (they grow, keeping what they hold); null: they have it. */
+  grow: { vertices: number; edges: number; triangles: number } | null;
 }
 
 /**
@@ -179,7 +192,7 @@ export interface Snapshot {
   report: BuildReport | null;
   file: FileInfo | null;
   /** The phase that produced this mesh (while stepping, and after an operation in the history). */
-  phase: Phase | null;
+  phase: ShownPhase | null;
   /** Pointers changed by the last phase or edit. */
   diff: PointerDiff | null;
   /** While stepping, the colours of the per-vertex values the phase reports (null: none, draw the surface plain). */

@@ -13,9 +13,13 @@
  * ```
  *
  * The session keeps one `RenderLayout` for what the page holds: `full()` lays the mesh out
- * afresh, `patch(change)` says what to rewrite, or null when a fresh layout is the better answer.
+ * afresh, `patch(change)` says what to rewrite. A change too large to patch element by element
+ * (a subdivision phase rewires every face), or one that outgrows the buffers, is laid out afresh
+ * and sent as whole-range writes, with the room the page's buffers must grow to first: the page
+ * keeps its mesh and patches it with the record, instead of taking a new one whole.
  */
 import type { BoundingSphere, ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
+import { changeBytes, forEachPointerWrite } from '../core/index.js';
 import { boundingSphere, faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
 import { PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
@@ -23,6 +27,12 @@ import { faceTriangles } from '../core/face-triangles.js';
 
 /** Spare room in every buffer, so that edits rarely need a fresh layout. */
 const SPARE = 1024;
+
+/**
+ * A change whose record holds more bytes than this many per halfedge is laid out afresh: the sets
+ * of touched elements would cost more than the pass over everything.
+ */
+const RELAYOUT_BYTES_PER_HALFEDGE = 2;
 
 export class RenderLayout {
   private faceStart = new Int32Array(0);
@@ -37,10 +47,10 @@ export class RenderLayout {
   /** Whether the page picks in its worker (decided at the last full layout): patches then carry its copies. */
   private pickingInWorker = false;
 
-  /** Every buffer laid out afresh, with room to grow. */
-  full(mesh: HalfedgeMesh): RenderBuffers {
-    const vertexRoom = mesh.vertexSlots + SPARE;
-    const edgeRoom = mesh.edgeSlots + SPARE;
+  /** Every buffer laid out afresh, with room to grow (at least `least`, the room the page's buffers have). */
+  full(mesh: HalfedgeMesh, least = { vertices: 0, edges: 0, triangles: 0 }): RenderBuffers {
+    const vertexRoom = Math.max(least.vertices, mesh.vertexSlots + SPARE);
+    const edgeRoom = Math.max(least.edges, mesh.edgeSlots + SPARE);
     const positions = new Float32Array(3 * vertexRoom);
     positions.set(mesh.positions.subarray(0, 3 * mesh.vertexSlots));
     const vertices = new Uint32Array(vertexRoom);
@@ -57,7 +67,7 @@ export class RenderLayout {
       count += degree - 2;
       if (degree > 3) this.polygons++;
     }
-    const triangleRoom = count + 2 * SPARE;
+    const triangleRoom = Math.max(least.triangles, count + 2 * SPARE);
     const triangles = new Uint32Array(3 * triangleRoom);
     const triangleFace = new Int32Array(triangleRoom).fill(-1);
     this.faceStart = new Int32Array(mesh.faceSlots + SPARE);
@@ -88,10 +98,43 @@ export class RenderLayout {
 
   /**
    * The writes that bring the page's buffers from the mesh before `change` to `mesh` (after it),
-   * or null when they do not fit the room left (lay the mesh out afresh with `full`).
+   * or null when the page must take the mesh whole (picking moves into or out of its worker).
    */
   patch(mesh: HalfedgeMesh, change: ChangeRecord): RenderPatch | null {
-    if (mesh.vertexSlots > this.capacity.vertices || mesh.edgeSlots > this.capacity.edges || mesh.faceSlots > this.faceStart.length) return null;
+    const fits = mesh.vertexSlots <= this.capacity.vertices && mesh.edgeSlots <= this.capacity.edges && mesh.faceSlots <= this.faceStart.length;
+    const large = changeBytes(change) > RELAYOUT_BYTES_PER_HALFEDGE * Math.max(SPARE, mesh.halfedgeSlots);
+    return (fits && !large && this.patchTouched(mesh, change)) || this.relayout(mesh);
+  }
+
+  /**
+   * Every buffer laid out afresh, sent as one write each over what is in use. `grow` says how
+   * large the page's buffers must be first (null: they have room).
+   */
+  private relayout(mesh: HalfedgeMesh): RenderPatch | null {
+    const room = { ...this.capacity };
+    const picking = this.pickingInWorker;
+    const render = this.full(mesh, room);
+    if (this.pickingInWorker !== picking) return null;
+    const { counts } = render;
+    const grown = this.capacity.vertices > room.vertices || this.capacity.edges > room.edges || this.capacity.triangles > room.triangles;
+    const writes: RenderWrite[] = [
+      { buffer: 'positions', offset: 0, data: render.positions.subarray(0, 3 * counts.vertices) },
+      { buffer: 'vertices', offset: 0, data: render.vertices.subarray(0, counts.vertices) },
+      { buffer: 'edges', offset: 0, data: render.edges.subarray(0, 2 * counts.edges) },
+      { buffer: 'triangles', offset: 0, data: render.triangles.subarray(0, 3 * counts.triangles) },
+      { buffer: 'triangleFace', offset: 0, data: render.triangleFace.subarray(0, counts.triangles) },
+    ];
+    const pickingWrites: RenderWrite[] | null = render.picking
+      ? [
+          { buffer: 'positions', offset: 0, data: render.picking.positions.subarray(0, 3 * counts.vertices) },
+          { buffer: 'triangles', offset: 0, data: render.picking.triangles },
+        ]
+      : null;
+    return { writes, counts, picking: pickingWrites, bounds: render.bounds, grow: grown ? { ...this.capacity } : null };
+  }
+
+  /** The writes of the elements `change` touched, or null when they outgrow the room the triangles have. */
+  private patchTouched(mesh: HalfedgeMesh, change: ChangeRecord): RenderPatch | null {
     const touched = touchedBy(mesh, change);
     const writes: RenderWrite[] = [];
     if (this.polygons > 0) {
@@ -121,7 +164,7 @@ export class RenderLayout {
       if (count > this.faceRoom[f]) {
         // the old range is too small: blank it and move the face to the end
         if (this.faceRoom[f] > 0) writes.push(...blank(start, this.faceRoom[f]));
-        if (this.trianglesUsed + count > this.capacity.triangles) return null;
+        if (this.trianglesUsed + count > this.capacity.triangles) return null; // laid out afresh, which resets all this
         start = this.faceStart[f] = this.trianglesUsed;
         this.trianglesUsed += count;
         this.faceRoom[f] = count;
@@ -132,7 +175,7 @@ export class RenderLayout {
       if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
     }
     const picking = this.pickingInWorker ? writes.filter((w) => w.buffer === 'positions' || w.buffer === 'triangles').map((w) => ({ ...w, data: w.data.slice() })) : null;
-    return { writes, counts: this.counts(mesh), picking, bounds: positions.reduce((sum, w) => sum + w.data.length / 3, 0) > REBOUND_ABOVE ? boundsOf(mesh) : null };
+    return { writes, counts: this.counts(mesh), picking, bounds: positions.reduce((sum, w) => sum + w.data.length / 3, 0) > REBOUND_ABOVE ? boundsOf(mesh) : null, grow: null };
   }
 
   /**
@@ -180,16 +223,15 @@ function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<nu
   for (let v = before.vertexSlots; v < after.vertexSlots; v++) vertices.add(v);
   for (let e = before.edgeSlots; e < after.edgeSlots; e++) edges.add(e);
   for (let f = before.faceSlots; f < after.faceSlots; f++) faces.add(f);
-  const { array, index, old, new: now } = change.pointers;
-  for (let i = 0; i < array.length; i++) {
-    const id = index[i];
-    switch (array[i]) {
+  forEachPointerWrite(change, (array, id, old, now) => {
+    switch (array) {
       case meshArrayIndex.heVertex:
         edges.add(id >> 1);
         if (mesh.heFace[id] >= 0) faces.add(mesh.heFace[id]);
         break;
       case meshArrayIndex.heFace:
-        for (const f of [old[i], now[i]]) if (f >= 0) faces.add(f);
+        if (old >= 0) faces.add(old);
+        if (now >= 0) faces.add(now);
         break;
       case meshArrayIndex.heNext:
         if (mesh.heFace[id] >= 0) faces.add(mesh.heFace[id]);
@@ -205,18 +247,18 @@ function touchedBy(mesh: HalfedgeMesh, change: ChangeRecord): { vertices: Set<nu
         faces.add(id);
         break;
     }
-  }
+  });
   const moved = change.values.filter((value) => value.kind === 'vertex' && value.name === 'position');
   return { vertices, edges, faces, moved };
 }
 
 function movedCount(moved: ValueChange[]): number {
-  return moved.reduce((sum, value) => sum + value.old.length / value.itemSize, 0);
+  return moved.reduce((sum, value) => sum + value.new.length / value.itemSize, 0);
 }
 
 function forEachMoved(moved: ValueChange[], visit: (v: number) => void): void {
   for (const value of moved) {
-    const count = value.old.length / value.itemSize;
+    const count = value.new.length / value.itemSize;
     for (let i = 0; i < count; i++) visit(value.index ? value.index[i] : value.start + i);
   }
 }
@@ -241,9 +283,9 @@ function positionWrites(mesh: HalfedgeMesh, moved: ValueChange[], touched: Set<n
   touched.forEach(include);
   for (const value of moved) {
     if (value.index) value.index.forEach(include);
-    else if (value.old.length > 0) {
+    else if (value.new.length > 0) {
       include(value.start);
-      include(value.start + value.old.length / value.itemSize - 1);
+      include(value.start + value.new.length / value.itemSize - 1);
     }
   }
   if (last < 0) return [];

@@ -9,7 +9,7 @@
  *
  * What the page holds: every snapshot has a version, and when the page holds the mesh just before
  * a change that has a record, the next snapshot carries the record and the render writes instead
- * of the whole mesh (`MeshPatch`), so an edit costs what it changes.
+ * of the whole mesh (`MeshPatch`), so an edit, or a stepped phase, costs what it changes.
  */
 import {
   type BuildReport,
@@ -17,14 +17,11 @@ import {
   deserializeMesh,
   type HalfedgeMesh,
   invertChange,
-  type MeshPointers,
   meshFingerprint,
   type Operation,
-  type Phase,
   noChange,
   onlyChangesValues,
-  phaseDiff,
-  pointerCopy,
+  phaseElements,
   pointerDiffOf,
   type PointerDiff,
   positionsChange,
@@ -37,7 +34,7 @@ import { type WriteFormat, writeMeshAsync } from '../core/io/index.js';
 import { type ColourScale, colourScale } from './colour-scale.js';
 import { applyEdit, type EditRequest, operationLabel, type OperationRequest, startOperation } from './operations.js';
 import { EDIT_ROOM, History } from './history.js';
-import type { FileInfo, HistorySource, LoadedFile, ProgressListener, Snapshot, SnapshotDetails, SnapshotVerbs, SteppingState } from './protocol.js';
+import { type FileInfo, type HistorySource, type LoadedFile, PHASE_MARKS, type ProgressListener, type ShownPhase, type Snapshot, type SnapshotDetails, type SnapshotVerbs, type SteppingState } from './protocol.js';
 import { RenderLayout } from './render.js';
 import { fullDetails, movedDetails, patchedDetails } from './snapshot.js';
 
@@ -46,7 +43,7 @@ interface EntryInfo {
   source: HistorySource;
   report: BuildReport | null;
   file: FileInfo | null;
-  phase: Phase | null;
+  phase: ShownPhase | null;
   diff: PointerDiff | null;
 }
 
@@ -62,8 +59,10 @@ interface Stepping {
   startPositions: Float64Array<ArrayBuffer> | null;
   operation: Operation;
   phases: number;
-  phase: Phase | null;
+  phase: ShownPhase | null;
   diff: PointerDiff | null;
+  /** The record of the last phase run (null before the first): the page's patch. */
+  change: ChangeRecord | null;
 }
 
 /** Pointer changes a phase's diff lists (all are counted). */
@@ -170,8 +169,9 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
 
   /**
    * Goes back one phase, as far as the operation's start; after the last `step`, back into the
-   * operation (whose result stays in the history, for redo). Operations cannot run backwards, so
-   * the operation runs again from its start to the phase before; the page gets the whole mesh.
+   * operation (whose result stays in the history, for redo). The page gets the whole mesh: the
+   * operation runs again from its start to the phase before (an operation on a copy of the mesh
+   * cannot simply undo its last record, as the copy compacted the mesh first).
    */
   stepBack(): Snapshot {
     const stepping = this.stepping ?? this.ended;
@@ -186,9 +186,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const again = this.begin(stepping.request);
     const target = stepping.phases - 1;
     for (let i = 1; i <= target; i++) {
-      // only the phase shown needs its pointer diff (a copy of every pointer before it)
-      const before = i === target && !again.startPositions ? pointerCopy(again.working) : null;
-      if (!this.advance(again, before)) throw new TopologyError(`${stepping.label} ended after ${i - 1} phases when run again`);
+      if (!this.advance(again)) throw new TopologyError(`${stepping.label} ended after ${i - 1} phases when run again`);
     }
     if (again.total !== null && again.phases >= again.total) again.total = null;
     return this.send(null, -1);
@@ -350,40 +348,42 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const working = inPlace ? current : current.clone();
     const { operation, phases } = startOperation(working, request);
     const startPositions = inPlace ? positionsOf(current) : null;
-    this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null };
+    this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null, change: null };
     return this.stepping;
   }
 
   /**
-   * Runs the operation's next phase, if it has one (false when it has finished instead); `before`:
-   * the pointers before it, to list the phase's pointer changes (null: the phase only moves vertices).
+   * Runs the operation's next phase, if it has one (false when it has finished instead), and
+   * keeps its record: the page's patch, the pointer diff, and what the phase marks.
    */
-  private advance(stepping: Stepping, before: MeshPointers | null): boolean {
+  private advance(stepping: Stepping): boolean {
     const next = stepping.operation.next();
     if (next.done) return false;
     stepping.phases++;
-    stepping.phase = next.value;
-    // what the phase says it created, rewired and removed: only those elements are compared
-    stepping.diff = before ? phaseDiff(before, stepping.working, next.value, DIFF_LIMIT) : { changes: [], total: 0 };
+    const { change, ...phase } = next.value;
+    const record = change ?? noChange(stepping.working);
+    stepping.phase = { ...phase, ...phaseElements(record, PHASE_MARKS) };
+    stepping.diff = pointerDiffOf(record, DIFF_LIMIT);
+    stepping.change = record;
     return true;
   }
 
-  /** Runs one phase; returns its change record when it has one (an operation that only moves vertices). */
+  /** Runs one phase; returns its change record (null when two phases ran, and the page needs the whole mesh). */
   private stepOnce(): ChangeRecord | null {
     const stepping = this.stepping;
     if (!stepping) throw new TopologyError('no operation is being stepped: start one first');
     const { working } = stepping;
-    const positions = stepping.startPositions ? positionsOf(working) : null;
-    const before = positions ? null : pointerCopy(working);
-    const phaseChange = () => (positions ? positionsChange(working, positions) : null);
     this.state++;
-    if (this.advance(stepping, before)) {
-      if (stepping.total === null || stepping.phases < stepping.total) return phaseChange();
+    // an operation that ends without another phase (decimation finds nothing more) changed nothing
+    let change: ChangeRecord | null = noChange(working);
+    if (this.advance(stepping)) {
+      change = stepping.change;
+      if (stepping.total === null || stepping.phases < stepping.total) return change;
       // that was the last announced phase: let the operation finish now, so no empty step follows;
       // one that had more to do than it announced shows that phase as well, and stops predicting
-      if (this.advance(stepping, before)) {
+      if (this.advance(stepping)) {
         stepping.total = null;
-        return phaseChange();
+        return null;
       }
     }
     // the operation is over: its result joins the history
@@ -397,7 +397,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     };
     if (stepping.startPositions) this.history.pushChange(stepping.label, positionsChange(working, stepping.startPositions), info);
     else this.history.pushMesh(stepping.label, working, info);
-    return phaseChange();
+    return change;
   }
 
   /**
@@ -433,7 +433,7 @@ function steppingState(stepping: Stepping | null): SteppingState | null {
 }
 
 /** The colours of a phase's per-vertex values (one per vertex slot), if it reports them. */
-function vertexColours(mesh: HalfedgeMesh, phase: Phase | null): ColourScale | null {
+function vertexColours(mesh: HalfedgeMesh, phase: ShownPhase | null): ColourScale | null {
   const values = phase?.values?.vertices;
   return values && values.length === mesh.vertexSlots ? colourScale(values) : null;
 }

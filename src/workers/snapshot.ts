@@ -41,6 +41,9 @@ export function fullDetails(mesh: HalfedgeMesh, report: BuildReport | null, vers
  */
 export function patchedDetails(mesh: HalfedgeMesh, change: ChangeRecord, previous: SnapshotDetails, version: number): SnapshotDetails {
   const { nVertices: vertices, nEdges: edges, nFaces: faces } = mesh;
+  // a phase that rewrote whole ranges (a subdivision step) touched everything: its check is the
+  // full pass, which comes after, and the boundary edges are counted rather than followed
+  const bulk = change.ranges.length > 0;
   const stats = {
     ...previous.stats,
     vertices,
@@ -48,12 +51,12 @@ export function patchedDetails(mesh: HalfedgeMesh, change: ChangeRecord, previou
     faces,
     halfedges: 2 * edges,
     eulerCharacteristic: vertices - edges + faces,
-    boundaryEdges: previous.stats.boundaryEdges + boundaryEdgesChange(mesh, change),
+    boundaryEdges: bulk ? boundaryEdgeCount(mesh) : previous.stats.boundaryEdges + boundaryEdgesChange(mesh, change),
   };
   // The local check vouches for the whole mesh only when the mesh before was sound. One that was
   // not (a practice state) keeps the problems it had, unchecked, until the full pass: simpler than
   // sorting out which of them the change may have mended, and they are marked pending.
-  const problems = previous.problems.length > 0 ? previous.problems : validateChange(mesh, change, { limit: PROBLEMS_LIMIT });
+  const problems = previous.problems.length > 0 || bulk ? previous.problems : validateChange(mesh, change, { limit: PROBLEMS_LIMIT });
   return { ...previous, version, stats, problems };
 }
 
@@ -64,6 +67,14 @@ export function patchedDetails(mesh: HalfedgeMesh, change: ChangeRecord, previou
  */
 export function movedDetails(mesh: HalfedgeMesh, previous: SnapshotDetails, version: number): SnapshotDetails {
   return { ...previous, version, stats: { ...previous.stats, ...geometryStats(mesh, previous.stats.closed) } };
+}
+
+/** The live edges with a side that has no face. */
+function boundaryEdgeCount(mesh: HalfedgeMesh): number {
+  const { heFace, eDeleted } = mesh;
+  let count = 0;
+  for (let e = 0; e < mesh.edgeSlots; e++) if (!eDeleted[e] && (heFace[2 * e] === -1 || heFace[2 * e + 1] === -1)) count++;
+  return count;
 }
 
 /** The checks of every face that the page would otherwise run on its thread. */

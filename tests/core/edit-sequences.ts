@@ -5,7 +5,7 @@
 import fc from 'fast-check';
 import { elementEdits, elementOf, shapes } from '../../fuzz/edits.js';
 import { buildMesh } from '../../src/core/build.js';
-import type { ChangeRecord } from '../../src/core/change.js';
+import type { ChangeRecord } from '../../src/core/change/record.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
 
 export interface EditSequence {

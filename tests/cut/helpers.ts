@@ -4,7 +4,7 @@ import { buildMesh } from '../../src/core/build.js';
 import { type PlaneCutOptions, planeCut, type Plane, unitPlane } from '../../src/core/cut/index.js';
 import { boundingBox, signedVolume } from '../../src/core/geometry.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
-import type { Phase } from '../../src/core/operation.js';
+import { type Phase, type PhaseElements, phaseElements } from '../../src/core/change/operation.js';
 import { uvSphere, voxelSurface } from '../../src/core/shapes.js';
 import { mergeSoups, type PolygonSoup, soupFromArrays } from '../../src/core/soup.js';
 import { validate } from '../../src/core/validate.js';
@@ -16,14 +16,17 @@ export function meshOf(soup: PolygonSoup): HalfedgeMesh {
 }
 
 /** Steps through the cut, checking the mesh after every phase; returns the phases. */
-export function stepCut(mesh: HalfedgeMesh, plane: Plane, options: PlaneCutOptions = {}): Phase[] {
-  const phases: Phase[] = [];
+export function stepCut(mesh: HalfedgeMesh, plane: Plane, options: PlaneCutOptions = {}): CutPhase[] {
+  const phases: CutPhase[] = [];
   for (const phase of planeCut(mesh, plane, options)) {
     expect(validate(mesh), `after "${phase.name}"`).toEqual([]);
-    phases.push(phase);
+    phases.push({ ...phase, ...phaseElements(phase.change!) });
   }
   return phases;
 }
+
+/** A phase of the cut with what its record says it created, moved, rewired and removed. */
+export type CutPhase = Phase & PhaseElements;
 
 /** Volumes of the capped halves above and below the plane, each cut from a copy of `mesh`. */
 export function halfVolumes(mesh: HalfedgeMesh, plane: Plane): [number, number] {
@@ -41,7 +44,7 @@ export function size(mesh: HalfedgeMesh): number {
 }
 
 /** Largest distance from the plane of a corner of the faces the cap phase made. */
-export function capDistance(mesh: HalfedgeMesh, phases: Phase[], plane: Plane): number {
+export function capDistance(mesh: HalfedgeMesh, phases: CutPhase[], plane: Plane): number {
   const { nx, ny, nz, d } = unitPlane(plane);
   let worst = 0;
   for (const f of phases[5].created?.faces ?? []) {

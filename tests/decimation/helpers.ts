@@ -7,7 +7,7 @@ import { type DecimationOptions, decimation } from '../../src/core/decimation/in
 import { boundingBox } from '../../src/core/geometry.js';
 import { readMesh } from '../../src/core/io/index.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
-import type { Phase } from '../../src/core/operation.js';
+import { type Phase, type PhaseElements, phaseElements } from '../../src/core/change/operation.js';
 import type { PolygonSoup } from '../../src/core/soup.js';
 import { validate } from '../../src/core/validate.js';
 
@@ -24,11 +24,11 @@ export function bunny(): HalfedgeMesh {
 }
 
 /** Steps through the decimation, checking the mesh after every phase; returns the phases. */
-export function stepDecimation(mesh: HalfedgeMesh, options: DecimationOptions): Phase[] {
-  const phases: Phase[] = [];
+export function stepDecimation(mesh: HalfedgeMesh, options: DecimationOptions): Array<Phase & PhaseElements> {
+  const phases: Array<Phase & PhaseElements> = [];
   for (const phase of decimation(mesh, options)) {
     expect(validate(mesh), `after "${phase.name}"`).toEqual([]);
-    phases.push(phase);
+    phases.push({ ...phase, ...phaseElements(phase.change!) });
   }
   return phases;
 }

@@ -1,8 +1,8 @@
 /** Shared checks for the local edits: the reported changes against the pointer diff, and validity. */
 import { expect } from 'vitest';
 import { buildMesh } from '../../src/core/build.js';
-import { applyChange } from '../../src/core/change.js';
-import { diffPointers } from '../../src/core/diff.js';
+import { applyChange } from '../../src/core/change/record.js';
+import { diffPointers } from '../../src/core/change/diff.js';
 import type { EditResult } from '../../src/core/edits/index.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
 import { soupFromArrays, type PolygonSoup } from '../../src/core/soup.js';

@@ -21,7 +21,7 @@ import {
   validate,
 } from '../../src/index.js';
 import { cannotRemesh, meanEdgeLength, remesh, remeshing, type RemeshingOptions } from '../../src/core/remeshing/index.js';
-import type { Phase } from '../../src/core/operation.js';
+import { type Phase, phaseElements } from '../../src/core/change/operation.js';
 import { meshContents } from '../core/contents.js';
 import { vertexToSurfaceDistance } from '../decimation/helpers.js';
 import { triangulate } from '../subdivision/helpers.js';
@@ -199,14 +199,15 @@ describe('the phases of remeshing', () => {
   it('list every vertex they moved, and how far the smoothing moved each', () => {
     const mesh = wavyGrid();
     let before = mesh.clone();
-    for (const phase of remeshing(mesh, { iterations: 2 })) {
-      const moved = new Set(phase.moved?.vertices ?? []);
+    for (const step of remeshing(mesh, { iterations: 2 })) {
+      const phase = { ...step, ...phaseElements(step.change!) };
+      const moved = new Set(phase.moved.vertices ?? []);
       const unlisted = [...before.vertices()].filter(
         (v) => !mesh.vDeleted[v] && !moved.has(v) && [0, 1, 2].some((k) => mesh.positions[3 * v + k] !== before.positions[3 * v + k]),
       );
       expect(unlisted, phase.name).toEqual([]);
       if (phase.name.startsWith('smooth')) {
-        const v = phase.moved!.vertices![0];
+        const v = phase.moved.vertices![0];
         const distance = Math.hypot(...[0, 1, 2].map((k) => mesh.positions[3 * v + k] - before.positions[3 * v + k]));
         expect(phase.values!.vertices![v]).toBeCloseTo(distance, 6);
       }

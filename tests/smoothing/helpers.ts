@@ -2,7 +2,7 @@
 import { expect } from 'vitest';
 import { buildMesh } from '../../src/core/build.js';
 import type { HalfedgeMesh } from '../../src/core/mesh.js';
-import type { Phase } from '../../src/core/operation.js';
+import { type Phase, type PhaseElements, phaseElements } from '../../src/core/change/operation.js';
 import { type SmoothingOptions, smoothing } from '../../src/core/smoothing/index.js';
 import { seededRandom } from '../../src/core/random.js';
 import type { PolygonSoup } from '../../src/core/soup.js';
@@ -30,11 +30,11 @@ export function connectivity(mesh: HalfedgeMesh): Int32Array[] {
 }
 
 /** Steps through the smoothing, checking the mesh after every phase; returns the phases. */
-export function stepSmoothing(mesh: HalfedgeMesh, options: SmoothingOptions): Phase[] {
-  const phases: Phase[] = [];
+export function stepSmoothing(mesh: HalfedgeMesh, options: SmoothingOptions): Array<Phase & PhaseElements> {
+  const phases: Array<Phase & PhaseElements> = [];
   for (const phase of smoothing(mesh, options)) {
     expect(validate(mesh), `after "${phase.name}"`).toEqual([]);
-    phases.push(phase);
+    phases.push({ ...phase, ...phaseElements(phase.change!) });
   }
   return phases;
 }

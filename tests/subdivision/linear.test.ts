@@ -6,7 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { cube, disk, grid, type HalfedgeMesh, type PolygonSoup, torus, uvSphere, validate } from '../../src/index.js';
 import { cannotSubdivide, linearSubdivision, subdivide, subdivisionOperation } from '../../src/core/subdivision/index.js';
-import { runOperation } from '../../src/core/operation.js';
+import { runOperation } from '../../src/core/change/operation.js';
 import { meshContents } from '../core/contents.js';
 import { at, expectedCounts, flower, meshOf, pyramid, stepLevel, topologyOf } from './helpers.js';
 

@@ -12,7 +12,7 @@
  * edge gets no face point; on the even levels the boundary stays.
  */
 import { describe, expect, it } from 'vitest';
-import { runOperation } from '../../src/core/operation.js';
+import { runOperation } from '../../src/core/change/operation.js';
 import { sqrt3Subdivision } from '../../src/core/subdivision/index.js';
 import { cube, fan, grid, type PolygonSoup, soupFromArrays } from '../../src/index.js';
 import { faceLists, meshOf, triangulate } from './helpers.js';

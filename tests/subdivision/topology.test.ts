@@ -3,6 +3,7 @@ import {
   annulus,
   cube,
   diffPointers,
+  phaseElements,
   disk,
   doubleTorus,
   fan,
@@ -101,7 +102,8 @@ describe.each(schemes)('%s subdivision', (scheme) => {
   it('lists every element whose pointers a phase changed as created or rewired, and every vertex it moved', () => {
     const check = (mesh: HalfedgeMesh, level = 0) => {
       let before = mesh.clone();
-      for (const phase of subdivisionOperation(mesh, scheme, { level })) {
+      for (const step of subdivisionOperation(mesh, scheme, { level })) {
+        const phase = { ...step, ...phaseElements(step.change!) };
         const created = new Set(phase.created?.vertices ?? []);
         const listed = {
           halfedge: new Set([...(phase.rewired?.halfedges ?? []), ...[...(phase.created?.edges ?? [])].flatMap((e) => [2 * e, 2 * e + 1])]),

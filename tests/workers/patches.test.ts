@@ -8,28 +8,10 @@ import { describe, expect, it } from 'vitest';
 import { meshFingerprint, seededRandom, torus, uvSphere, writeSoup } from '../../src/index.js';
 import { loadFile } from '../../src/workers/load.js';
 import type { PageSnapshot } from '../../src/workers/page-copy.js';
-import type { RenderBuffers } from '../../src/workers/protocol.js';
 import { RenderLayout } from '../../src/workers/render.js';
 import { EditingSession } from '../../src/workers/session.js';
+import { drawn } from './drawn.js';
 import { pageSession, randomEdit } from './page-session.js';
-
-/** What the buffers draw: sorted triangles (as sorted corner triples) with their faces, sorted edges, the dots. */
-function drawn(render: RenderBuffers) {
-  const triangles: string[] = [];
-  for (let t = 0; t < render.counts.triangles; t++) {
-    const corners = [render.triangles[3 * t], render.triangles[3 * t + 1], render.triangles[3 * t + 2]];
-    if (render.triangleFace[t] === -1) continue; // a triangle of no area, where a face was
-    triangles.push(`${[...corners].sort((a, b) => a - b).join(' ')} f${render.triangleFace[t]}`);
-  }
-  const edges: string[] = [];
-  for (let e = 0; e < render.counts.edges; e++) {
-    const [a, b] = [render.edges[2 * e], render.edges[2 * e + 1]];
-    if (a !== b) edges.push(`${Math.min(a, b)} ${Math.max(a, b)}`);
-  }
-  const dots = new Set(Array.from(render.vertices.subarray(0, render.counts.vertices)));
-  const positions = Array.from(render.positions.subarray(0, 3 * render.counts.vertices));
-  return { triangles: triangles.sort(), edges: edges.sort(), dots: [...dots].sort((a, b) => a - b), positions };
-}
 
 describe('the page copy, patched', () => {
   it.each([

@@ -1,7 +1,7 @@
 /** `cut IN OUT --plane a,b,c,d [--keep above|below|both] [--no-cap]`: cut a mesh with a plane. */
 import { cutMesh, type KeepSide } from '../../core/cut/index.js';
 import type { HalfedgeMesh } from '../../core/mesh.js';
-import type { Phase } from '../../core/operation.js';
+import type { Phase } from '../../core/change/operation.js';
 import { loadMesh, parseOptions, saveMesh, UsageError } from '../io.js';
 import type { Command } from './index.js';
 

@@ -29,7 +29,7 @@
  */
 import { splitEdgeTriangulatedAt } from '../edits/split-edge.js';
 import { fillRings, planeBasis, triangulatePolygon } from '../edits/triangulate.js';
-import type { PointerWriter } from '../edits/writer.js';
+import type { PointerWriter } from '../change/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import type { UnitPlane } from './plane.js';
 

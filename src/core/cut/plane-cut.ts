@@ -27,10 +27,11 @@
  * Deleted elements are marked, not compacted, so ids stay stable from phase to phase.
  */
 import { splitEdgeAt } from '../edits/split-edge.js';
-import { PointerWriter } from '../edits/writer.js';
+import { PointerWriter } from '../change/writer.js';
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { type ElementIds, type Operation, type Phase, runOperation, unionIds } from '../operation.js';
+import { type ElementIds, type Operation, type Phase, runOperation } from '../change/operation.js';
+import { ChangeRecorder } from '../change/recorder.js';
 import { capLoops } from './caps.js';
 import { type Plane, type UnitPlane, unitPlane } from './plane.js';
 import { faceSides, separateSides } from './separate.js';
@@ -51,6 +52,8 @@ export interface PlaneCutOptions {
    * count as on the plane and are moved onto it (default 1e-10).
    */
   tolerance?: number;
+  /** Whether each phase carries its change record (default true: a cut stepped in the app; `cutMesh` runs without). */
+  record?: boolean;
 }
 
 /**
@@ -70,7 +73,7 @@ export function planeCut(mesh: HalfedgeMesh, plane: Plane, options: PlaneCutOpti
   if (!(tolerance >= 0 && Number.isFinite(tolerance))) {
     throw new InvalidInputError(`the tolerance must be a finite number ≥ 0, not ${tolerance}`);
   }
-  return cutInPhases(new PlaneCut(mesh, unit), keep, options.cap ?? true, tolerance);
+  return cutInPhases(new PlaneCut(mesh, unit, options.record ?? true), keep, options.cap ?? true, tolerance);
 }
 
 /**
@@ -78,7 +81,7 @@ export function planeCut(mesh: HalfedgeMesh, plane: Plane, options: PlaneCutOpti
  * @example cutMesh(mesh, { a: 0, b: 0, c: 1, d: 0 }, { keep: 'above' }); // the upper half, capped
  */
 export function cutMesh(mesh: HalfedgeMesh, plane: Plane, options: PlaneCutOptions = {}): Phase[] {
-  return runOperation(planeCut(mesh, plane, options));
+  return runOperation(planeCut(mesh, plane, { record: false, ...options }));
 }
 
 function* cutInPhases(cut: PlaneCut, keep: KeepSide, cap: boolean, tolerance: number): Operation {
@@ -103,10 +106,24 @@ class PlaneCut {
   /** The edges along the cut after phase 4: both copies of each. */
   private readonly cutEdges: number[] = [];
 
+  /** The record of the phase under way (null: not recording). */
+  private recorder: ChangeRecorder | null = null;
+
   constructor(
     private readonly mesh: HalfedgeMesh,
     private readonly plane: UnitPlane,
+    private readonly recording: boolean,
   ) {}
+
+  /** Starts the record of a phase (when recording); returns it. */
+  private record(): ChangeRecorder | null {
+    return (this.recorder = this.recording ? new ChangeRecorder(this.mesh) : null);
+  }
+
+  /** The phase's record, for its `Phase`. */
+  private recorded(): Pick<Phase, 'change'> {
+    return this.recorder ? { change: this.recorder.record() } : {};
+  }
 
   classifyVertices(tolerance: number): Phase {
     const { mesh, onPlane } = this;
@@ -117,7 +134,8 @@ class PlaneCut {
     const side = (this.side = new Int8Array(n));
     const distance = (this.distance = new Float64Array(n));
     const values = new Float32Array(n);
-    const moved: number[] = [];
+    const recorder = this.record();
+    let moved = 0;
     let above = 0;
     let below = 0;
     for (let v = 0; v < n; v++) {
@@ -137,10 +155,11 @@ class PlaneCut {
         onPlane.push(v);
         if (s !== 0) {
           // snap: move along the normal by the distance
+          recorder?.element('vertex', v);
           p[i] -= s * nx;
           p[i + 1] -= s * ny;
           p[i + 2] -= s * nz;
-          moved.push(v);
+          moved++;
         }
       }
     }
@@ -149,12 +168,12 @@ class PlaneCut {
       name: 'classify vertices',
       explanation:
         `Each vertex gets its signed distance to the plane: ${above} are above it, ${below} below and ${onPlane.length} on it ` +
-        `(within ${epsilon.toPrecision(2)}, the tolerance times the mesh's size; ${moved.length} of those were moved onto it, so the cut makes no sliver faces and no second vertex beside them). ` +
+        `(within ${epsilon.toPrecision(2)}, the tolerance times the mesh's size; ${moved} of those were moved onto it, so the cut makes no sliver faces and no second vertex beside them). ` +
         (crosses
           ? 'Where an edge or a face has vertices on both sides, the next phases cut it.'
           : 'No edge or face has vertices on both sides: the plane does not cross the mesh, and the next phases find nothing to cut.'),
-      moved: { vertices: Int32Array.from(moved) },
       values: { vertices: values },
+      ...this.recorded(),
     };
   }
 
@@ -169,7 +188,7 @@ class PlaneCut {
     const k = crossing.length + onPlane.length;
     mesh.reserve({ vertices: mesh.vertexSlots + 2 * k, edges: mesh.edgeSlots + 5 * k, faces: mesh.faceSlots + 3 * k });
 
-    const w = new PointerWriter(mesh, { record: false, rewired: true });
+    const w = new PointerWriter(mesh, { recorder: this.record() });
     for (const e of crossing) {
       const a = distance[mesh.heVertex[2 * e]];
       const b = distance[mesh.heVertex[2 * e + 1]];
@@ -178,84 +197,83 @@ class PlaneCut {
     // the new vertices are on the plane: side 0
     this.side = new Int8Array(mesh.vertexSlots);
     this.side.set(side);
-    const { created, rewired } = w.result();
     return {
       name: 'split crossing edges',
       explanation:
         `${crossing.length} edges run from one side to the other; each gets a new vertex where it meets the plane, at the fraction d(a) / (d(a) − d(b)) of the way from a to b, with its attributes blended the same way. ` +
         'The faces beside them gain a corner on the plane, and no edge crosses the plane any more.',
-      created,
-      // the edges split, and what the writer saw rewired around them
-      rewired: unionIds({ edges: Int32Array.from(crossing) }, rewired),
+      ...this.recorded(),
     };
   }
 
   splitCrossedFaces(): Phase {
-    const w = new PointerWriter(this.mesh, { record: false, rewired: true });
+    const w = new PointerWriter(this.mesh, { recorder: this.record() });
     const { split, midpoints } = splitCrossedFaces(w, this.side, this.onPlane, this.plane);
     // the vertices halfway along new edges are on the plane: side 0
     this.onPlane.push(...midpoints);
     const side = this.side;
     this.side = new Int8Array(this.mesh.vertexSlots);
     this.side.set(side);
-    const { created, rewired } = w.result();
     return {
       name: 'split crossed faces',
       explanation:
         `${split.length} faces have corners on both sides; each is cut by new edges between its corners on the plane (a face crossed twice, like a U, gets two; two corners already joined round the other way are joined through a new vertex halfway). ` +
         'Now every face lies on one side, touching the plane at most along its edges and corners.',
-      created,
-      rewired: unionIds({ faces: Int32Array.from(split) }, rewired),
+      ...this.recorded(),
     };
   }
 
   separateSides(): Phase {
     const { mesh } = this;
     this.faceSide = faceSides(mesh, this.side, this.plane);
-    const w = new PointerWriter(mesh, { record: false, rewired: true });
+    const w = new PointerWriter(mesh, { recorder: this.record() });
     const { cutEdges, newEdges, cutVertices } = separateSides(w, this.onPlane, this.faceSide);
     for (const e of cutEdges) this.cutEdges.push(e);
     for (const e of newEdges) this.cutEdges.push(e);
-    const { created, rewired } = w.result();
+    const { created } = w.result();
     return {
       name: 'separate the sides',
       explanation:
         `The ${cutEdges.length} edges with a face above and a face below become two edges each, and the ${cutVertices.length} vertices on the cut one vertex per fan of faces (${created.vertices?.length ?? 0} copies). ` +
         'Above and below are now separate pieces of surface, each with the cut as a boundary.',
-      created,
-      rewired: unionIds({ edges: Int32Array.from(cutEdges), vertices: Int32Array.from(cutVertices) }, rewired),
       values: { faces: Float32Array.from(this.faceSide) },
+      ...this.recorded(),
     };
   }
 
   removeSide(keep: KeepSide): Phase {
     if (keep === 'both') {
+      this.record();
       return {
         name: 'remove a side',
         explanation: 'Both sides are kept, as separate pieces of one mesh. Nothing is removed.',
+        ...this.recorded(),
       };
     }
     const gone = keep === 'above' ? -1 : 1;
+    // deleting a side writes flags across the whole mesh, not through a writer
+    this.record()?.wholeMesh();
     const removed = deleteSide(this.mesh, this.faceSide, this.side, gone);
     return {
       name: 'remove a side',
       explanation:
         `The ${removed.faces!.length} faces ${keep === 'above' ? 'below' : 'above'} the plane are deleted, with the ${removed.edges!.length} edges and ${removed.vertices!.length} vertices only they used. ` +
         `What is left lies ${keep} the plane; the other elements keep their ids (deleted slots are only marked).`,
-      removed,
+      ...this.recorded(),
     };
   }
 
   capLoops(sides: number[]): Phase {
     if (sides.length === 0) {
+      this.record();
       return {
         name: 'cap the cut',
         explanation: 'Capping is off, so the cut stays open: each side keeps its loops of boundary edges. With capping on, each loop is filled with a flat polygon.',
+        ...this.recorded(),
       };
     }
-    const w = new PointerWriter(this.mesh, { record: false, rewired: true });
+    const w = new PointerWriter(this.mesh, { recorder: this.record() });
     const { caps, fanned, faces, open } = capLoops(w, this.cutEdges, this.faceSide, this.plane, sides);
-    const { created, removed, rewired } = w.result();
     const fanNote = fanned
       ? ` (${fanned === 1 ? 'one is' : `${fanned} are`} a fan from one corner, as ${fanned === 1 ? 'its outline crosses itself' : 'their outlines cross themselves'} where faces lie almost in the plane)`
       : '';
@@ -267,9 +285,7 @@ class PlaneCut {
       explanation:
         `Each loop of cut edges is laid flat in the plane, a loop inside another running the other way becomes its hole, and ear clipping fills each outline: ${caps} cap${caps === 1 ? '' : 's'} of ${faces.length} triangles${fanNote}. ` +
         openNote,
-      created,
-      removed,
-      rewired,
+      ...this.recorded(),
     };
   }
 }

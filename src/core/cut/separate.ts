@@ -23,7 +23,7 @@
  */
 import { faceVectorArea } from '../geometry.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import type { PointerWriter } from '../edits/writer.js';
+import type { PointerWriter } from '../change/writer.js';
 import type { UnitPlane } from './plane.js';
 
 /**

@@ -34,7 +34,7 @@ import type { HalfedgeMesh } from '../mesh.js';
 import { halfedgeFromTo } from '../edits/find.js';
 import { splitEdgeAt } from '../edits/split-edge.js';
 import { splitFaceAt } from '../edits/split-face.js';
-import type { PointerWriter } from '../edits/writer.js';
+import type { PointerWriter } from '../change/writer.js';
 import type { UnitPlane } from './plane.js';
 
 /**

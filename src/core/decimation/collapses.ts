@@ -37,10 +37,10 @@
  * since the last chance).
  */
 import { canCollapseEdge, collapseEdgeAt } from '../edits/collapse.js';
-import { PointerWriter } from '../edits/writer.js';
+import { PointerWriter } from '../change/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { zeros } from '../memory.js';
-import type { ElementIds } from '../operation.js';
+import type { ChangeRecorder } from '../change/recorder.js';
 import { Candidates } from './candidates.js';
 import { AREA, addPlane, optimalPoint, QUADRIC_SIZE, quadricError, sumQuadrics } from './quadric.js';
 
@@ -106,22 +106,18 @@ export class Decimator {
 
   /**
    * Collapses the cheapest allowed edges, pass after pass, until the mesh has at most `faceGoal`
-   * faces or nothing allowed is left. When `survivors` is given, lists the vertex that survived
-   * each collapse into it and returns the ids of what was removed and rewired; else no ids.
+   * faces or nothing allowed is left, writing every collapse into `recorder` (null: no record).
    */
-  collapseUntil(faceGoal: number, survivors: number[] | null): { removed: ElementIds; rewired?: ElementIds } {
-    // one writer for all the passes: no change list, and the ids only when listing
-    const listing = survivors !== null;
-    const w = new PointerWriter(this.mesh, { record: false, ids: listing, rewired: listing });
+  collapseUntil(faceGoal: number, recorder: ChangeRecorder | null): void {
+    // one writer for all the passes, no ids listed
+    const w = new PointerWriter(this.mesh, { recorder, ids: false });
     // Bounded: a pass that collapses nothing refuses at least one edge, which stays out until a
     // collapse (or plans every edge again, which needs a collapse since the last time), or ends.
-    while (this.mesh.nFaces > faceGoal && !this.exhausted) this.pass(w, faceGoal, survivors);
-    const { removed, rewired } = w.result();
-    return { removed, rewired };
+    while (this.mesh.nFaces > faceGoal && !this.exhausted) this.pass(w, faceGoal);
   }
 
   /** One pass (see above). */
-  private pass(w: PointerWriter, faceGoal: number, survivors: number[] | null): void {
+  private pass(w: PointerWriter, faceGoal: number): void {
     const { mesh, costs, costBits, touched, candidates, quadrics: q, point } = this;
     const { heVertex, eDeleted } = mesh; // a collapse never reallocates them
 
@@ -196,7 +192,6 @@ export class Decimator {
       sumQuadrics(q, QUADRIC_SIZE * a, QUADRIC_SIZE * b, q, QUADRIC_SIZE * a);
       this.onBoundary[a] |= this.onBoundary[b];
       this.collapsedSinceReplan++;
-      survivors?.push(a);
     }
   }
 

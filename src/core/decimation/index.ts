@@ -23,8 +23,8 @@
  * Phases: "compute quadrics" (the quadrics; `values.vertices` is the cost of each
  * vertex's cheapest collapse, for a colour map, NaN where none is allowed), then batches of
  * collapses, each taking about `batchFraction` (10% unless said) of the faces left, until the target.
- * A batch lists the vertices, edges and faces it removed, the survivors (moved, and rewired with
- * the halfedges leaving them) and the new cheapest costs. When stepping, collapsed elements are
+ * A batch carries its record (what it removed, the survivors it moved and rewired) and the new
+ * cheapest costs. When stepping, collapsed elements are
  * only marked deleted, never compacted, so ids stay stable across phases and after the last one;
  * call `mesh.compact()` afterwards to drop the deleted slots. Straight through (`decimate`), the
  * mesh is renumbered for speed first.
@@ -41,7 +41,8 @@
  */
 import { InvalidInputError, TopologyError } from '../errors.js';
 import type { CompactionMaps, HalfedgeMesh } from '../mesh.js';
-import type { ElementIds, Operation, Phase } from '../operation.js';
+import type { Operation } from '../change/operation.js';
+import { ChangeRecorder } from '../change/recorder.js';
 import { spatialOrder } from '../spatial-order.js';
 import { needsTriangles } from '../triangles.js';
 import { Decimator } from './collapses.js';
@@ -114,8 +115,8 @@ export function decimate(mesh: HalfedgeMesh, options: DecimationOptions = {}): C
   return renumbering;
 }
 
-/** The phases; `listIds` false leaves their id lists and values out (a run straight through). */
-function* decimationPhases(mesh: HalfedgeMesh, settings: DecimationSettings, listIds: boolean): Operation {
+/** The phases; `recording` false leaves their records and values out (a run straight through). */
+function* decimationPhases(mesh: HalfedgeMesh, settings: DecimationSettings, recording: boolean): Operation {
   const { targetFaces, batchFraction } = settings;
 
   // compute quadrics (the first pass plans every collapse)
@@ -125,31 +126,24 @@ function* decimationPhases(mesh: HalfedgeMesh, settings: DecimationSettings, lis
     explanation:
       'Every vertex sums the planes of its triangles into a quadric, a 4×4 matrix that gives the squared distance of any point to all those planes at once, and each boundary edge adds a steep plane that holds the rim in place. ' +
       'Each edge then finds the point where the quadric of its two ends is smallest: that error is the cost of collapsing it, and the colours show the cheapest collapse at each vertex.',
-    ...(listIds ? { values: { vertices: decimator.cheapestCollapses() } } : {}),
+    ...(recording ? { values: { vertices: decimator.cheapestCollapses() }, change: new ChangeRecorder(mesh).record() } : {}),
   };
 
   // collapse edges in batches, cheapest first
   while (mesh.nFaces > targetFaces && !decimator.exhausted) {
     const before = mesh.nFaces;
     const goal = Math.max(targetFaces, before - Math.max(1, Math.floor(batchFraction * before)));
-    const survivors: number[] | null = listIds ? [] : null;
-    const { removed, rewired } = decimator.collapseUntil(goal, survivors);
+    const recorder = recording ? new ChangeRecorder(mesh) : null;
+    decimator.collapseUntil(goal, recorder);
     if (mesh.nFaces === before) break;
     yield {
       name: `collapse ${before - mesh.nFaces} faces (${mesh.nFaces} left)`,
       explanation:
         'The cheapest edges collapse, no two sharing a vertex, each merging its two ends into one vertex at its best point; the survivor sums both quadrics, and the edges around it get new costs. ' +
         'A collapse that would make the surface non-manifold (the link condition) or turn a triangle over is skipped, so the mesh stays a valid surface.',
-      ...(survivors ? batchIds(mesh, removed, rewired!, survivors, decimator) : {}),
+      ...(recorder ? { change: recorder.record(), values: { vertices: decimator.cheapestCollapses() } } : {}),
     };
   }
-}
-
-/** A batch's phase fields: what it removed and rewired, the survivors it moved, the new costs. */
-function batchIds(mesh: HalfedgeMesh, removed: ElementIds, rewired: ElementIds, survivorList: number[], decimator: Decimator): Partial<Phase> {
-  // survivors that a later collapse of the batch did not take in turn
-  const survivors = Int32Array.from(new Set(survivorList)).filter((v) => !mesh.vDeleted[v]).sort();
-  return { removed, moved: { vertices: survivors }, rewired, values: { vertices: decimator.cheapestCollapses() } };
 }
 
 function requireApplicable(mesh: HalfedgeMesh, options: DecimationOptions): void {

@@ -61,7 +61,7 @@ import { vertexOutgoingHalfedges } from '../circulators.js';
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { missingEdge, missingVertex, rotationFrom } from './find.js';
-import { type EditOptions, type FaceEditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type FaceEditResult, PointerWriter } from '../change/writer.js';
 
 export interface BevelOptions extends EditOptions {
   /** The fraction of the way each new corner moves along its edge, 0 … 1; default 0 (a face of zero area). */

@@ -53,7 +53,7 @@ import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { replaceParallel } from './collapse.js';
 import { isTriangleLoop, missingFace } from './find.js';
-import { type EditOptions, PointerWriter, type VertexEditResult } from './writer.js';
+import { type EditOptions, PointerWriter, type VertexEditResult } from '../change/writer.js';
 
 /** What the checks found, for the collapse to use. */
 interface CollapsePlan {

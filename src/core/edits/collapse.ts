@@ -35,7 +35,7 @@
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { isTriangleLoop, missingEdge } from './find.js';
-import { type EditOptions, PointerWriter, type VertexEditResult } from './writer.js';
+import { type EditOptions, PointerWriter, type VertexEditResult } from '../change/writer.js';
 
 export interface CollapseOptions extends EditOptions {
   /** Where the surviving vertex goes, as x, y, z; default the midpoint of the edge. */

@@ -65,7 +65,7 @@ import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { halfedgeFromTo, missingEdge, missingVertex, rotationFrom } from './find.js';
 import { canMakeBoundary, makeBoundaryAt } from './make-boundary.js';
-import { type EditOptions, type FaceEditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type FaceEditResult, PointerWriter } from '../change/writer.js';
 
 // ---------------------------------------------------------------------------------------------
 // Dissolve edge

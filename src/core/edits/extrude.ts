@@ -37,7 +37,7 @@ import { TopologyError } from '../errors.js';
 import { faceCentroid, faceNormal } from '../geometry.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { missingFace } from './find.js';
-import { type EditOptions, type FaceEditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type FaceEditResult, PointerWriter } from '../change/writer.js';
 
 /** Where an extruded face goes. */
 export interface ExtrudePlacement {

@@ -18,7 +18,7 @@
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { halfedgeFromTo, isTriangleLoop, missingEdge } from './find.js';
-import { type EditOptions, type EditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type EditResult, PointerWriter } from '../change/writer.js';
 
 /**
  * Why edge `e` cannot be flipped, or null when it can. Refused: a boundary edge, an edge not

@@ -69,4 +69,4 @@ export {
   type HalfedgeEditResult,
   PointerWriter,
   type VertexEditResult,
-} from './writer.js';
+} from '../change/writer.js';

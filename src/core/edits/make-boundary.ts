@@ -34,7 +34,7 @@
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { missingFace } from './find.js';
-import { type EditOptions, type HalfedgeEditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type HalfedgeEditResult, PointerWriter } from '../change/writer.js';
 
 /**
  * Why face `f` cannot become a hole, or null when it can (a pinch at a corner, or a lone face;

@@ -19,7 +19,7 @@ import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { mergeAcrossAt, whyNotMergeAcross } from './dissolve.js';
 import { missingEdge } from './find.js';
-import { type EditOptions, type FaceEditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type FaceEditResult, PointerWriter } from '../change/writer.js';
 
 /** What `mergeFaces` returns: the merged face (the one that was on the `2e` side). */
 export type MergeResult = FaceEditResult;

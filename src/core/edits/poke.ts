@@ -18,7 +18,7 @@
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { missingFace } from './find.js';
-import { type EditOptions, PointerWriter, type VertexEditResult } from './writer.js';
+import { type EditOptions, PointerWriter, type VertexEditResult } from '../change/writer.js';
 
 /** Why face `f` cannot be poked, or null when it can (any live face can). */
 export function canPokeFace(mesh: HalfedgeMesh, f: number): string | null {

@@ -27,7 +27,7 @@ import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { isTriangleLoop, missingEdge } from './find.js';
 import { splitFaceAt } from './split-face.js';
-import { type EditOptions, PointerWriter, type VertexEditResult } from './writer.js';
+import { type EditOptions, PointerWriter, type VertexEditResult } from '../change/writer.js';
 
 export interface SplitEdgeOptions extends EditOptions {
   /** Where the new vertex goes along the edge, from origin(2e) (0) to origin(2e + 1) (1); default 0.5. */

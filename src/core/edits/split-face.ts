@@ -15,7 +15,7 @@
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { faceHalfedgeFrom, halfedgeFromTo, missingFace } from './find.js';
-import { type EditOptions, type EditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type EditResult, PointerWriter } from '../change/writer.js';
 
 export interface FaceSplitResult extends EditResult {
   /** The new edge; its halfedge `2 · edge` runs from `v` to `u` in the old face. */

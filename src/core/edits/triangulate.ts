@@ -30,7 +30,7 @@ import { TopologyError } from '../errors.js';
 import { faceVectorArea } from '../geometry.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { halfedgeFromTo, missingFace } from './find.js';
-import { type EditOptions, type EditResult, PointerWriter } from './writer.js';
+import { type EditOptions, type EditResult, PointerWriter } from '../change/writer.js';
 
 /**
  * Two unit vectors `u`, `w` spanning the plane with normal `n`, with u × w along n: the

@@ -43,7 +43,7 @@
 import { TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { missingEdge, rotationFrom } from './find.js';
-import { type EdgeEditResult, type EditOptions, PointerWriter } from './writer.js';
+import { type EdgeEditResult, type EditOptions, PointerWriter } from '../change/writer.js';
 
 /** The halves of a merged pair, blended half and half. */
 const halves = [0.5, 0.5];

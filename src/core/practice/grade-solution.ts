@@ -3,7 +3,7 @@
  * page passes a runner that uses a sandbox worker, the CLI one that uses a worker thread; both
  * hand back one `RunOutput` per fixture, and everything else happens here, the same everywhere.
  */
-import { inWriteOrder } from '../change.js';
+import { inWriteOrder } from '../change/recorder.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { type Exercise, type ExerciseInput, fixtureMesh, frozenInput } from './exercise.js';
 import { type Check, type FixtureResult, gradeFixture } from './grade.js';

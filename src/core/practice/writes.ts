@@ -9,7 +9,7 @@
  *   newEdge()       at line 13  ──►  { field: 'newEdge', index: 18, old: null, new: null, line: 13 }
  * ```
  */
-import type { PointerChange } from '../diff.js';
+import type { PointerChange } from '../change/diff.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { type ElementKind, slotCount } from '../mesh-arrays.js';
 

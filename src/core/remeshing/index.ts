@@ -27,9 +27,10 @@
  *   for (const phase of remeshing(mesh)) show(phase);         // step by step
  */
 import { InvalidInputError, TopologyError } from '../errors.js';
-import { PointerWriter } from '../edits/writer.js';
+import { ChangeRecorder } from '../change/recorder.js';
+import { PointerWriter } from '../change/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import type { Operation, Phase } from '../operation.js';
+import type { Operation, Phase } from '../change/operation.js';
 import { spatialOrder } from '../spatial-order.js';
 import { needsTriangles } from '../triangles.js';
 import { meanEdgeLength, Remesher, TANGENTIAL_STEP } from './remesher.js';
@@ -92,18 +93,16 @@ export function remesh(mesh: HalfedgeMesh, options: RemeshingOptions = {}): void
   mesh.compact();
 }
 
-/** The phases; `listIds` false leaves their id lists and values out (a run straight through). */
-function* remeshingPhases(mesh: HalfedgeMesh, settings: RemeshingSettings, listIds: boolean): Operation {
+/** The phases; `recording` false leaves their records and values out (a run straight through). */
+function* remeshingPhases(mesh: HalfedgeMesh, settings: RemeshingSettings, recording: boolean): Operation {
   const { targetEdgeLength: L, iterations } = settings;
   const remesher = new Remesher(mesh, L);
   const length = +L.toPrecision(3);
-  // one writer per phase, recording nothing: its ids only when stepping
-  const writer = () => new PointerWriter(mesh, { record: false, ids: listIds, rewired: listIds });
-  const idsOf = (w: PointerWriter): Partial<Phase> => {
-    if (!listIds) return {};
-    const { created, removed, rewired } = w.result();
-    return { created, removed, rewired };
-  };
+  // one record per phase when stepping, and one writer writing it
+  let recorder: ChangeRecorder | null = null;
+  const record = () => (recorder = recording ? new ChangeRecorder(mesh) : null);
+  const writer = () => new PointerWriter(mesh, { recorder: record(), ids: false });
+  const recorded = (): Partial<Phase> => (recorder ? { change: recorder.record() } : {});
 
   for (let i = 1; i <= iterations; i++) {
     const of = `iteration ${i} of ${iterations}`;
@@ -116,20 +115,18 @@ function* remeshingPhases(mesh: HalfedgeMesh, settings: RemeshingSettings, listI
       explanation:
         `Every edge longer than 4/3 of the target length L = ${length} is split at its midpoint, and the triangles beside it are split through the new vertex. ` +
         'New edges that are still too long are split in turn, so afterwards no edge is longer than 4/3 L.',
-      ...idsOf(w),
+      ...recorded(),
     };
 
     // collapse short edges
     w = writer();
-    const survivors: number[] | null = listIds ? [] : null;
-    remesher.collapseShortEdges(w, survivors);
+    remesher.collapseShortEdges(w);
     yield {
       name: `collapse short edges (${of})`,
       explanation:
         'Every edge shorter than 4/5 L shrinks to a point, unless that would break the surface (the link condition), turn a triangle over, or make an edge longer than 4/3 L. ' +
         'Two inside vertices merge at their midpoint (or at one end, where the midpoint is too far from a neighbour), while an edge that reaches the boundary keeps its boundary end, so the rim keeps its shape.',
-      ...idsOf(w),
-      ...(survivors ? { moved: { vertices: Int32Array.from(new Set(survivors)).filter((v) => !mesh.vDeleted[v]).sort() } } : {}),
+      ...recorded(),
     };
 
     // flip edges towards valence 6
@@ -140,18 +137,20 @@ function* remeshingPhases(mesh: HalfedgeMesh, settings: RemeshingSettings, listI
       explanation:
         'An edge between two triangles is flipped when that brings its two ends and the two corners facing it closer to the valence of a regular mesh: 6 edges at a vertex inside, 4 on the boundary. ' +
         'Regular valences let the next step make the triangles nearly equilateral.',
-      ...idsOf(w),
+      ...recorded(),
     };
 
     // smooth and project
-    const distances = listIds ? new Float32Array(mesh.vertexSlots) : null;
-    const moved = remesher.smoothAndProject(distances);
+    const distances = recording ? new Float32Array(mesh.vertexSlots) : null;
+    record()?.valueRange('vertex', 0, mesh.vertexSlots);
+    remesher.smoothAndProject(distances);
     yield {
       name: `smooth and project (${of})`,
       explanation:
         `Each vertex moves ${TANGENTIAL_STEP === 0.2 ? 'a fifth' : TANGENTIAL_STEP} of the way towards the centroid of its neighbours, but only along the surface (in its tangent plane), every new place worked out from the old ones before any vertex moves. ` +
         'Then each inside vertex goes to the nearest point of the input surface, so the triangles even out while the shape stays; the colours show how far each vertex went.',
-      ...(moved && distances ? { moved: { vertices: moved }, values: { vertices: distances } } : {}),
+      ...recorded(),
+      ...(distances ? { values: { vertices: distances } } : {}),
     };
   }
 }

@@ -35,16 +35,15 @@
  *     rim never collapses (`canCollapseEdge`: it would pinch the surface).
  * So a closed mesh stays closed, and an open one keeps its boundary loops, its corners and its rim.
  *
- * Edits go through one `PointerWriter` per phase with recording off (as decimation's), so a
- * step costs only its stores; stepping, the writer lists the ids a phase created, rewired and
- * removed. Deleted elements stay in their slots until `index.ts` compacts the mesh at the end of
+ * Edits go through one `PointerWriter` per phase, which writes the phase's record when stepping
+ * and nothing else run straight through (as decimation's), so a step then costs only its stores. Deleted elements stay in their slots until `index.ts` compacts the mesh at the end of
  * a run straight through.
  */
 import { keepsOrientation } from '../decimation/collapses.js';
 import { canCollapseEdge, collapseEdgeAt } from '../edits/collapse.js';
 import { canFlipEdge, flipEdgeAt } from '../edits/flip.js';
 import { splitEdgeTriangulatedAt } from '../edits/split-edge.js';
-import type { PointerWriter } from '../edits/writer.js';
+import type { PointerWriter } from '../change/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { NearestTriangle } from './nearest-triangle.js';
 
@@ -188,15 +187,14 @@ export class Remesher {
 
   /**
    * Step 2: collapses every edge shorter than 4/5 L where that keeps the surface valid, folds no
-   * triangle over and makes no edge longer than 4/3 L. `survivors`, given, gets the vertex each
-   * collapse kept (it moved).
+   * triangle over and makes no edge longer than 4/3 L.
    *
    * The short edges are listed in one pass over the edges and collapsed the shortest first (in
    * `LENGTH_CLASSES`); a collapse can leave a short edge at the merged vertex, or let a refused
    * neighbour go, so the short edges around each survivor make the list of another pass, while
    * passes collapse anything.
    */
-  collapseShortEdges(w: PointerWriter, survivors: number[] | null): void {
+  collapseShortEdges(w: PointerWriter): void {
     const mesh = this.mesh;
     const { hePrev, vHalfedge, eDeleted } = mesh; // a collapse never grows the arrays
     this.p = mesh.positions;
@@ -222,7 +220,6 @@ export class Remesher {
         if (eDeleted[e] || this.lengthSquared(e) >= this.shortSquared) continue;
         const a = this.tryCollapse(w, e);
         if (a < 0) continue;
-        survivors?.push(a);
         // the short edges around the survivor, for the next pass
         const start = vHalfedge[a];
         let h = start;
@@ -411,10 +408,10 @@ export class Remesher {
   }
 
   /**
-   * Step 4: tangential smoothing, then projection onto the input surface. Returns the vertices it
-   * may have moved when `distances` is given (and writes there how far each one went), else null.
+   * Step 4: tangential smoothing, then projection onto the input surface; `distances`, given, gets
+   * how far each vertex went.
    */
-  smoothAndProject(distances: Float32Array | null): Int32Array | null {
+  smoothAndProject(distances: Float32Array | null): void {
     const mesh = this.mesh;
     const V = mesh.vertexSlots;
     this.reserveVertices(V);
@@ -490,8 +487,6 @@ export class Remesher {
     }
 
     // move them all, and put the inside ones back on the input surface
-    const moved = distances ? new Int32Array(movable) : null;
-    let k = 0;
     for (let v = 0; v < V; v++) {
       const role = roles[v];
       if (role === 0) continue;
@@ -505,15 +500,11 @@ export class Remesher {
         z = surface.z;
         guess[v] = surface.triangle;
       }
-      if (distances && moved) {
-        distances[v] = Math.hypot(x - p[o], y - p[o + 1], z - p[o + 2]);
-        moved[k++] = v;
-      }
+      if (distances) distances[v] = Math.hypot(x - p[o], y - p[o + 1], z - p[o + 2]);
       p[o] = x;
       p[o + 1] = y;
       p[o + 2] = z;
     }
-    return moved;
   }
 }
 

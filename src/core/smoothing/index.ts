@@ -28,7 +28,8 @@
  */
 import { InvalidInputError, TopologyError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import type { Operation, Phase } from '../operation.js';
+import type { Operation, Phase } from '../change/operation.js';
+import { ChangeRecorder } from '../change/recorder.js';
 import { type BoundaryRule, LaplacianSmoother } from './laplacian.js';
 import { needsTriangles } from '../triangles.js';
 
@@ -86,7 +87,7 @@ export function smoothing(mesh: HalfedgeMesh, options: SmoothingOptions): Operat
   const settings = settingsOf(options);
   // prepared here rather than in the first phase, so that stepping costs only the steps
   const smoother = new LaplacianSmoother(mesh, settings.boundary);
-  return smoothingPhases(smoother, settings, smoother.movableVertices());
+  return smoothingPhases(smoother, settings, true);
 }
 
 /**
@@ -97,26 +98,28 @@ export function smoothing(mesh: HalfedgeMesh, options: SmoothingOptions): Operat
 export function smooth(mesh: HalfedgeMesh, options: SmoothingOptions): void {
   requireApplicable(mesh, options);
   const settings = settingsOf(options);
-  const phases = smoothingPhases(new LaplacianSmoother(mesh, settings.boundary), settings, null);
+  const phases = smoothingPhases(new LaplacianSmoother(mesh, settings.boundary), settings, false);
   while (!phases.next().done) {
     // straight through: the phases matter only when stepping
   }
 }
 
-/** The phases; without `movable` (a run straight through) they leave out their id lists and values. */
-function* smoothingPhases(smoother: LaplacianSmoother, settings: SmoothingSettings, movable: Int32Array | null): Operation {
+/** The phases; `recording` false (a run straight through) leaves out their records and values. */
+function* smoothingPhases(smoother: LaplacianSmoother, settings: SmoothingSettings, recording: boolean): Operation {
   const { method, iterations, lambda, mu } = settings;
   const { mesh } = smoother;
 
   /** One Laplacian step of size `step`, as a phase. */
   const stepPhase = (step: number, name: string, explanation: string): Phase => {
-    if (!movable) {
+    if (!recording) {
       smoother.step(step);
       return { name, explanation };
     }
     const distances = new Float32Array(mesh.vertexSlots);
+    const recorder = new ChangeRecorder(mesh);
+    recorder.valueRange('vertex', 0, mesh.vertexSlots);
     smoother.step(step, distances);
-    return { name, explanation, moved: { vertices: movable.slice() }, values: { vertices: distances } };
+    return { name, explanation, change: recorder.record(), values: { vertices: distances } };
   };
 
   for (let i = 1; i <= iterations; i++) {

@@ -175,19 +175,6 @@ export class LaplacianSmoother {
     }
     p.set(sums);
   }
-
-  /** The vertices a step may move: every live, connected one, less the boundary when it is fixed. */
-  movableVertices(): Int32Array {
-    const { roles } = this;
-    const fixed = this.boundary === 'fixed';
-    // straight into a typed array (a million ids through a list cost more than the step)
-    const ids = new Int32Array(this.mesh.vertexSlots);
-    let count = 0;
-    for (let v = 0; v < roles.length; v++) {
-      if (roles[v] === INTERIOR || (roles[v] === BOUNDARY && !fixed)) ids[count++] = v;
-    }
-    return ids.slice(0, count);
-  }
 }
 
 /** (a − corner) · (b − corner), for vertex offsets into the positions. */

@@ -68,7 +68,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import { zeros } from '../memory.js';
-import type { Operation } from '../operation.js';
+import type { Operation } from '../change/operation.js';
 import { levelOperation, type SchemeLevel } from './level.js';
 import { cutEveryCorner, loopLevel, splitEveryEdge } from './loop.js';
 import { addScaled } from './stencil.js';

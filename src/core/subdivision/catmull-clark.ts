@@ -26,7 +26,7 @@
  * the face points and the phases of the topology from here.
  */
 import type { HalfedgeMesh } from '../mesh.js';
-import type { Operation } from '../operation.js';
+import type { Operation } from '../change/operation.js';
 import { type LevelPhase, levelOperation, type SchemeLevel, type TopologyStep } from './level.js';
 import { connectFacePoints } from './shared-fan.js';
 import { faceCentroids, moveOldVertices, neighbourSums } from './stencil.js';
@@ -46,11 +46,11 @@ export const addFacePointsPhase: LevelPhase = {
   explanation:
     'Each face gets a new point at the mean of its corners, not yet joined to anything. ' +
     'A vertex without edges is allowed in a halfedge mesh: its halfedge is simply -1 until the points are connected.',
-  topology: (mesh, listIds) => addFacePoints(mesh, 'all', listIds, Infinity, true),
+  topology: (mesh) => void addFacePoints(mesh, 'all', Infinity, true),
 };
 
 /** Splits every edge at its edge point, already placed (vertex V + F + e for edge e). */
-export const splitAtEdgePoints: TopologyStep = (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, true);
+export const splitAtEdgePoints: TopologyStep = (mesh) => splitEdges(mesh, 'all', 2, true);
 
 /** The phase that joins each face point to the edge points around it (vertex V + f for face f). */
 export const connectFacePointsPhase: LevelPhase = {

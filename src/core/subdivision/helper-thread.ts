@@ -18,7 +18,6 @@ import { isShared, type Memory } from '../memory.js';
 import { type SerializedMesh, shareMesh } from '../serialize.js';
 import type { TopologyStep } from './level.js';
 import type { SubdivisionScheme } from './preconditions.js';
-import type { TopologyChange } from './topology.js';
 
 /** A level's topology steps (those of its scheme's phases, see `topology-task.ts`), on the mesh's own arrays in shared memory. */
 export interface TopologyTask {
@@ -58,14 +57,11 @@ export interface HelperRun {
 export interface HandedSteps {
   /**
    * Once the stencils are done: when the helper has begun the steps, waits for them (joining it in
-   * the step it shares, if any) and takes the slot counts they left, and each step then lists
+   * the step it shares, if any) and takes the slot counts they left, and each step then does
    * nothing; when it has not, they are called off, and each runs here.
    */
-  take(listIds: boolean): (i: number) => TopologyChange;
+  take(recording: boolean): (i: number) => void;
 }
-
-/** What a step the helper did reports: nothing, as a level run straight through lists no ids. */
-export const noIds: TopologyChange = { created: {}, rewired: {} };
 
 let installed: HelperThread | null = null;
 
@@ -81,8 +77,8 @@ export function useHelperThread(helper: HelperThread | null): void {
  * old arrays, which the helper leaves alone; else the mesh itself (stepping, no view is kept, so
  * the old arrays can go while the phases wait).
  */
-export function growForLevel(mesh: HalfedgeMesh, listIds: boolean, capacity: MeshCapacity): { helper: HelperRun | null; old: HalfedgeMesh } {
-  const helper = listIds || installed === null || mesh.faceSlots < installed.minFaces ? null : installed.start();
+export function growForLevel(mesh: HalfedgeMesh, recording: boolean, capacity: MeshCapacity): { helper: HelperRun | null; old: HalfedgeMesh } {
+  const helper = recording || installed === null || mesh.faceSlots < installed.minFaces ? null : installed.start();
   const old = helper === null ? mesh : mesh.view();
   mesh.reserve(capacity, helper?.memory);
   return { helper, old };
@@ -107,7 +103,7 @@ export function handOver(
     run.post({ scheme, oldVertices, mesh: shareMesh(mesh), work });
   }
   return {
-    take(listIds) {
+    take(recording) {
       const helped = run?.begun() ?? false;
       if (helped) {
         if (work !== undefined) shared!.join(mesh, oldVertices, work);
@@ -116,7 +112,9 @@ export function handOver(
         mesh.edgeSlots = slots.edgeSlots;
         mesh.faceSlots = slots.faceSlots;
       }
-      return (i) => (helped ? noIds : steps[i](mesh, listIds, oldVertices));
+      return (i) => {
+        if (!helped) steps[i](mesh, recording, oldVertices);
+      };
     },
   };
 }

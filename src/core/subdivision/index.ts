@@ -34,7 +34,7 @@
  */
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import type { Operation } from '../operation.js';
+import type { Operation } from '../change/operation.js';
 import { butterflyLevel, butterflySubdivision } from './butterfly.js';
 import { catmullClark, catmullClarkLevel } from './catmull-clark.js';
 import { levelPhases } from './level.js';
@@ -75,12 +75,12 @@ export function subdivisionOperation(mesh: HalfedgeMesh, scheme: SubdivisionSche
 }
 
 /** Each scheme's phases, with or without their id lists. */
-const phasesOf: Record<SubdivisionScheme, (mesh: HalfedgeMesh, listIds: boolean, level: number) => Operation> = {
-  loop: (mesh, listIds) => levelPhases(mesh, loopLevel, listIds),
-  'catmull-clark': (mesh, listIds) => levelPhases(mesh, catmullClarkLevel, listIds),
-  butterfly: (mesh, listIds) => levelPhases(mesh, butterflyLevel, listIds),
+const phasesOf: Record<SubdivisionScheme, (mesh: HalfedgeMesh, recording: boolean, level: number) => Operation> = {
+  loop: (mesh, recording) => levelPhases(mesh, loopLevel, recording),
+  'catmull-clark': (mesh, recording) => levelPhases(mesh, catmullClarkLevel, recording),
+  butterfly: (mesh, recording) => levelPhases(mesh, butterflyLevel, recording),
   sqrt3: sqrt3Level,
-  linear: (mesh, listIds) => levelPhases(mesh, linearLevel, listIds),
+  linear: (mesh, recording) => levelPhases(mesh, linearLevel, recording),
 };
 
 /**

@@ -9,7 +9,9 @@
  *    (`helper-thread.ts`): it rewires the new arrays while this thread works out the stencils;
  * 3. work out every stencil from the old mesh, while its one-rings are intact;
  * 4. run the phases in order: a topology step (here, unless the helper did them all), or the
- *    storing of the points a phase moves.
+ *    storing of the points a phase moves. Stepped, each phase records what it changed: a
+ *    topology step rewires the whole mesh (`ChangeRecorder.wholeMesh`), a move writes a range of
+ *    positions (`valueRange`).
  *
  * Where the new points wait until their phase: face points, and edge points that no phase of their
  * own moves (Catmull-Clark's), are written where they end before any topology, so the phase that
@@ -24,19 +26,19 @@
  */
 import type { HalfedgeMesh, MeshCapacity } from '../mesh.js';
 import type { Memory } from '../memory.js';
-import type { Operation } from '../operation.js';
+import type { Operation } from '../change/operation.js';
 import { growForLevel, handOver } from './helper-thread.js';
 import { compactAtOnce, requireApplicable, startLevel, type SubdivisionScheme } from './preconditions.js';
 import { blendedAttributes, storeValues } from './stencil.js';
-import { range, type TopologyChange } from './topology.js';
+import { ChangeRecorder } from '../change/recorder.js';
 
 /**
- * One of a level's topology steps, as its phase runs it: `oldVertices` is the vertex count when
- * the level began. A step that two threads can share says how (`share`), and is given their shared
+ * One of a level's topology steps, as its phase runs it: `recording` when the level is stepped
+ * (its phases shown one by one), `oldVertices` the vertex count when the level began. A step that two threads can share says how (`share`), and is given their shared
  * state (`work`) on the helper.
  */
 export interface TopologyStep {
-  (mesh: HalfedgeMesh, listIds: boolean, oldVertices: number, work?: Int32Array): TopologyChange;
+  (mesh: HalfedgeMesh, recording: boolean, oldVertices: number, work?: Int32Array): void;
   share?: SharedStep;
 }
 
@@ -80,7 +82,7 @@ export interface SchemeLevel {
 }
 
 /**
- * One level as a steppable operation that edits `mesh` in place (each phase with its id lists).
+ * One level as a steppable operation that edits `mesh` in place (each phase with its record).
  * @throws TopologyError when the scheme does not apply (nothing is changed).
  */
 export function levelOperation(mesh: HalfedgeMesh, level: SchemeLevel): Operation {
@@ -89,8 +91,8 @@ export function levelOperation(mesh: HalfedgeMesh, level: SchemeLevel): Operatio
   return levelPhases(mesh, level, true);
 }
 
-/** The phases of one level; `listIds` false leaves the phases' id lists out (a run straight through). */
-export function* levelPhases(mesh: HalfedgeMesh, level: SchemeLevel, listIds: boolean): Operation {
+/** The phases of one level; `recording` false leaves the phases' records out (a run straight through). */
+export function* levelPhases(mesh: HalfedgeMesh, level: SchemeLevel, recording: boolean): Operation {
   startLevel(mesh);
   const V = mesh.vertexSlots;
   const E = mesh.edgeSlots;
@@ -99,7 +101,7 @@ export function* levelPhases(mesh: HalfedgeMesh, level: SchemeLevel, listIds: bo
 
   // reserve memory; straight through, a helper thread (when there is one) does the topology steps
   // in the new arrays while this one works out the new positions from the old ones
-  const { helper, old } = growForLevel(mesh, listIds, level.counts(V, E, F));
+  const { helper, old } = growForLevel(mesh, recording, level.counts(V, E, F));
   const steps = level.phases.flatMap((phase) => ('topology' in phase ? [phase.topology] : []));
   const handed = handOver(helper, mesh, level.scheme, V, steps);
 
@@ -107,24 +109,27 @@ export function* levelPhases(mesh: HalfedgeMesh, level: SchemeLevel, listIds: bo
   // they end, unless they wait for a phase of their own while stepping), old vertices
   const attributes = blendedAttributes(mesh);
   if (level.facePoints) for (const a of attributes) level.facePoints(old, a.data, a.data, V);
-  const edgePointsWait = listIds && level.phases.some((phase) => 'moves' in phase && phase.moves === 'edge points');
+  const edgePointsWait = recording && level.phases.some((phase) => 'moves' in phase && phase.moves === 'edge points');
   const edgePoints = edgePointsWait ? attributes.map(() => new Float64Array(3 * E)) : null;
   attributes.forEach((a, i) => level.edgePoints(old, a.data, edgePoints?.[i] ?? a.data, edgePoints ? 0 : firstEdgePoint));
   const vertexPoints = level.vertexPoints ? attributes.map((a) => level.vertexPoints!(old, a.data)) : [];
-  const step = handed.take(listIds);
+  const step = handed.take(recording);
 
   // the phases, in order: change the topology, or store the points a phase moves
   let topologySteps = 0;
   for (const phase of level.phases) {
     const { name, explanation } = phase;
+    const recorder = recording ? new ChangeRecorder(mesh) : null;
     if ('topology' in phase) {
-      yield { name, explanation, ...step(topologySteps++) };
+      recorder?.wholeMesh();
+      step(topologySteps++);
     } else if (phase.moves === 'edge points') {
+      recorder?.valueRange('vertex', firstEdgePoint, firstEdgePoint + E);
       if (edgePoints) storeValues(attributes, edgePoints, firstEdgePoint);
-      yield { name, explanation, moved: { vertices: range(listIds, firstEdgePoint, firstEdgePoint + E) } };
     } else {
+      recorder?.valueRange('vertex', 0, V);
       storeValues(attributes, vertexPoints, 0);
-      yield { name, explanation, moved: { vertices: range(listIds, 0, V) } };
     }
+    yield { name, explanation, ...(recorder ? { change: recorder.record() } : {}) };
   }
 }

@@ -18,7 +18,7 @@
  * midpoint · connect the face points; V' = V + E + F, E' = 2E + C, F' = C, where C = Σ face degrees.
  */
 import type { HalfedgeMesh } from '../mesh.js';
-import type { Operation } from '../operation.js';
+import type { Operation } from '../change/operation.js';
 import { addFacePointsPhase, catmullClarkLevel, connectFacePointsPhase, splitAtEdgePoints } from './catmull-clark.js';
 import { levelOperation, type SchemeLevel } from './level.js';
 

@@ -20,7 +20,7 @@
  * Counts after one level: V' = V + E, E' = 2E + 3F, F' = 4F.
  */
 import type { HalfedgeMesh } from '../mesh.js';
-import type { Operation } from '../operation.js';
+import type { Operation } from '../change/operation.js';
 import { levelOperation, type SchemeLevel, type TopologyStep } from './level.js';
 import { moveOldVertices, neighbourSums } from './stencil.js';
 import { cutCorners, splitEdges } from './topology.js';
@@ -36,10 +36,11 @@ export function loopSubdivision(mesh: HalfedgeMesh): Operation {
 
 /**
  * Loop's topology, which Butterfly shares: split every edge in two (run straight through, the
- * edge points are already where they end, see `level.ts`), then cut the corners.
+ * edge points are already where they end; stepped, they wait at the midpoints: see `level.ts`),
+ * then cut the corners.
  */
-export const splitEveryEdge: TopologyStep = (mesh, listIds) => splitEdges(mesh, 'all', 2, listIds, !listIds);
-export const cutEveryCorner: TopologyStep = (mesh, listIds) => cutCorners(mesh, listIds);
+export const splitEveryEdge: TopologyStep = (mesh, recording) => splitEdges(mesh, 'all', 2, !recording);
+export const cutEveryCorner: TopologyStep = (mesh) => cutCorners(mesh);
 
 /** A level of Loop subdivision, for `level.ts` to run: reserve, edge points, vertex points, split. */
 export const loopLevel: SchemeLevel = {

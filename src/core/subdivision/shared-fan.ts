@@ -11,8 +11,7 @@
  */
 import type { HalfedgeMesh } from '../mesh.js';
 import type { Memory } from '../memory.js';
-import { noIds } from './helper-thread.js';
-import { appendSlots, fanFaces, fanRange, type TopologyChange } from './topology.js';
+import { appendSlots, fanFaces, fanRange } from './topology.js';
 
 /** Faces per chunk: a chunk takes a millisecond or two, so the threads finish close together. */
 const CHUNK_BITS = 14;
@@ -42,10 +41,9 @@ const STRIDE = 2;
  * points around its face, after the split: `fanFaces` on one thread, or, given the state shared
  * with the calling thread, the helper's part.
  */
-export function connectFacePoints(mesh: HalfedgeMesh, listIds: boolean, firstCentre: number, work?: Int32Array): TopologyChange {
-  if (work === undefined) return fanFaces(mesh, 'all', firstCentre, STRIDE, listIds);
-  prepareSharedFan(mesh, firstCentre, work);
-  return noIds;
+export function connectFacePoints(mesh: HalfedgeMesh, _recording: boolean, firstCentre: number, work?: Int32Array): void {
+  if (work === undefined) fanFaces(mesh, 'all', firstCentre, STRIDE);
+  else prepareSharedFan(mesh, firstCentre, work);
 }
 connectFacePoints.share = { work: sharedFanWork, join: joinSharedFan };
 
@@ -113,7 +111,7 @@ function fanChunks(mesh: HalfedgeMesh, firstCentre: number, work: Int32Array): v
   const faceAt = (i: number) => i;
   for (let c = Atomics.add(work, NEXT, 1); c < chunks; c = Atomics.add(work, NEXT, 1)) {
     const range = { faceAt, begin: c << CHUNK_BITS, end: Math.min(faces, (c + 1) << CHUNK_BITS), spoke: work[SPOKES + c] };
-    fanRange(mesh, range, first, firstCentre, STRIDE, null);
+    fanRange(mesh, range, first, firstCentre, STRIDE);
     Atomics.add(work, DONE, 1);
     Atomics.notify(work, DONE);
   }

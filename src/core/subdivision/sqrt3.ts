@@ -36,10 +36,11 @@
  */
 import { InvalidInputError } from '../errors.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { idRange, type Operation } from '../operation.js';
+import type { Operation } from '../change/operation.js';
 import { compactAtOnce, requireApplicable, startLevel } from './preconditions.js';
 import { addScaled, blendedAttributes, neighbourSums, storeValues } from './stencil.js';
-import { addFacePoints, appendSlots, fanFaces, marked, range, splitEdges, type TopologyChange } from './topology.js';
+import { addFacePoints, appendSlots, fanFaces, splitEdges } from './topology.js';
+import { ChangeRecorder } from '../change/recorder.js';
 
 export interface SubdivisionOptions {
   /**
@@ -65,8 +66,15 @@ export function sqrt3Subdivision(mesh: HalfedgeMesh, options: SubdivisionOptions
   return sqrt3Level(mesh, true, level);
 }
 
-/** The phases of level `level`; `listIds` false leaves the phases' id lists out (a run straight through). */
-export function* sqrt3Level(mesh: HalfedgeMesh, listIds: boolean, level: number): Operation {
+/** The phases of level `level`; `recording` false leaves the phases' records out (a run straight through). */
+export function* sqrt3Level(mesh: HalfedgeMesh, recording: boolean, level: number): Operation {
+  // each phase's record: of a topology step, which rewires the whole mesh, or of the moved vertices
+  let recorder: ChangeRecorder | null = null;
+  const record = (before: (recorder: ChangeRecorder) => void = (r) => r.wholeMesh()) => {
+    recorder = recording ? new ChangeRecorder(mesh) : null;
+    if (recorder) before(recorder);
+  };
+  const recorded = () => (recorder ? { change: recorder.record() } : {});
   const oddLevel = level % 2 === 1;
   startLevel(mesh);
   const V = mesh.vertexSlots;
@@ -88,49 +96,56 @@ export function* sqrt3Level(mesh: HalfedgeMesh, listIds: boolean, level: number)
   let faces: Int32Array | 'all' = 'all';
   if (splitBoundary) {
     const beforeBoundary = trianglesOnOneBoundaryEdge(mesh, boundary);
+    record();
+    splitEdges(mesh, boundary, 3);
     yield {
       name: 'split the boundary edges in three',
       explanation:
         'On every other level, √3 refines the boundary: each boundary edge gets two new vertices, a third of the way from either end. ' +
         'Two levels of √3 split every inner edge in three too, so this keeps the boundary in step with the inside.',
-      ...splitEdges(mesh, boundary, 3, listIds),
+      ...recorded(),
     };
     const fanned = new Uint8Array(F);
     for (const h of beforeBoundary) fanned[mesh.heFace[h]] = 1;
     faces = marked(fanned.map((skip) => 1 - skip));
+    record();
+    fanFromOppositeCorners(mesh, beforeBoundary);
     yield {
       name: 'join the boundary points to the opposite corners',
       explanation:
         'Each boundary triangle, now with five corners, is cut into three triangles ' +
         'by joining its two new points to the corner facing the boundary. ' +
         'These triangles get no face point on this level: the boundary has already been refined.',
-      ...fanFromOppositeCorners(mesh, beforeBoundary, listIds),
+      ...recorded(),
     };
   }
 
   // insert face points and split faces
-  const facePoints = addFacePoints(mesh, faces, listIds, V);
-  const fan = fanFaces(mesh, faces, V + newBoundaryPoints, 1, listIds);
+  record();
+  addFacePoints(mesh, faces, V);
+  fanFaces(mesh, faces, V + newBoundaryPoints, 1);
   yield {
     name: 'insert face points',
     explanation:
       (splitBoundary ? 'Each triangle away from the boundary' : 'Each triangle') +
       ' gets a new vertex at its centroid, joined to its three corners: one triangle becomes three. ' +
       'No edge is split, so the new triangles are thin; the next phase fixes their shape.',
-    created: { vertices: facePoints.created.vertices, edges: fan.created.edges, faces: fan.created.faces },
-    rewired: { halfedges: fan.rewired.halfedges, faces: fan.rewired.faces },
+    ...recorded(),
   };
 
   // flip the old edges
+  record();
+  flipOldEdges(mesh, E);
   yield {
     name: 'flip the old edges',
     explanation:
       'Every old edge between two triangles is flipped, so that it joins the two face points beside it instead of two old vertices. ' +
       'The triangles are well shaped again, and the mesh is turned by 30° against the old one: two levels together split each old edge in three.',
-    ...flipOldEdges(mesh, E, listIds),
+    ...recorded(),
   };
 
   // relax the old vertices (and place the new boundary points)
+  record((r) => r.valueRange('vertex', 0, V + newBoundaryPoints));
   storeValues(attributes, vertexPoints, 0);
   if (splitBoundary) storeValues(attributes, boundaryPoints, V);
   yield {
@@ -141,8 +156,18 @@ export function* sqrt3Level(mesh: HalfedgeMesh, listIds: boolean, level: number)
         ? 'On this level the boundary is smoothed as a curve: old boundary vertices take 4/27, 19/27, 4/27 ' +
           'of themselves and their neighbours, and the new boundary points their own cubic weights.'
         : 'On this level the boundary vertices stay where they are; the boundary is refined and smoothed on the next level.'),
-    moved: { vertices: range(listIds, 0, V + newBoundaryPoints) },
+    ...recorded(),
   };
+}
+
+/** The indices where `marks` is 1. */
+function marked(marks: Uint8Array): Int32Array {
+  let count = 0;
+  for (let i = 0; i < marks.length; i++) count += marks[i];
+  const ids = new Int32Array(count);
+  let k = 0;
+  for (let i = 0; i < marks.length; i++) if (marks[i] === 1) ids[k++] = i;
+  return ids;
 }
 
 /** The edges with a boundary halfedge, in id order. */
@@ -171,7 +196,7 @@ function trianglesOnOneBoundaryEdge(mesh: HalfedgeMesh, boundary: Int32Array): I
  * new edges of the i-th are `E + 2i` (p–x) and `E + 2i + 1` (q–x), its new faces `F + 2i` (p q x)
  * and `F + 2i + 1` (q b x), while (a p x) keeps the face id.
  */
-function fanFromOppositeCorners(mesh: HalfedgeMesh, before: Int32Array, listIds: boolean): TopologyChange {
+function fanFromOppositeCorners(mesh: HalfedgeMesh, before: Int32Array): void {
   const count = before.length;
   const first = appendSlots(mesh, 0, 2 * count, 2 * count);
   const { heNext, hePrev, heVertex, heFace, fHalfedge } = mesh;
@@ -179,7 +204,6 @@ function fanFromOppositeCorners(mesh: HalfedgeMesh, before: Int32Array, listIds:
     heNext[g] = next;
     hePrev[next] = g;
   };
-  const rewired = new Int32Array(5 * count);
   for (let i = 0; i < count; i++) {
     const xa = before[i];
     const ap = heNext[xa];
@@ -216,13 +240,7 @@ function fanFromOppositeCorners(mesh: HalfedgeMesh, before: Int32Array, listIds:
       mesh.faceAttributes.copy(pqx, f);
       mesh.faceAttributes.copy(qbx, f);
     }
-    rewired.set([xa, ap, pq, qb, bx], 5 * i);
   }
-  if (!listIds) return { created: {}, rewired: {} };
-  return {
-    created: { edges: idRange(first.edge, first.edge + 2 * count), faces: idRange(first.face, first.face + 2 * count) },
-    rewired: { halfedges: rewired, faces: Int32Array.from(before, (h) => heFace[h]) },
-  };
 }
 
 /**
@@ -237,14 +255,8 @@ function fanFromOppositeCorners(mesh: HalfedgeMesh, before: Int32Array, listIds:
  *        q                 q
  * ```
  */
-function flipOldEdges(mesh: HalfedgeMesh, oldEdges: number, listIds: boolean): TopologyChange {
+function flipOldEdges(mesh: HalfedgeMesh, oldEdges: number): void {
   const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
-  let count = 0;
-  if (listIds) for (let e = 0; e < oldEdges; e++) if (heFace[2 * e] !== -1 && heFace[2 * e + 1] !== -1) count++;
-  const halfedges = new Int32Array(6 * count);
-  const faces = new Int32Array(2 * count);
-  const vertices: number[] = [];
-  let k = 0;
   for (let e = 0; e < oldEdges; e++) {
     const h = 2 * e;
     const t = h + 1;
@@ -279,27 +291,9 @@ function flipOldEdges(mesh: HalfedgeMesh, oldEdges: number, listIds: boolean): T
     heFace[bp] = tFace;
     fHalfedge[tFace] = t;
     // a vertex whose halfedge was the flipped one takes another that still leaves it
-    if (vHalfedge[a] === h) {
-      vHalfedge[a] = aq;
-      if (listIds) vertices.push(a);
-    }
-    if (vHalfedge[b] === t) {
-      vHalfedge[b] = bp;
-      if (listIds) vertices.push(b);
-    }
-    if (!listIds) continue;
-    halfedges[6 * k] = h;
-    halfedges[6 * k + 1] = t;
-    halfedges[6 * k + 2] = pa;
-    halfedges[6 * k + 3] = bp;
-    halfedges[6 * k + 4] = qb;
-    halfedges[6 * k + 5] = aq;
-    faces[2 * k] = hFace;
-    faces[2 * k + 1] = tFace;
-    k++;
+    if (vHalfedge[a] === h) vHalfedge[a] = aq;
+    if (vHalfedge[b] === t) vHalfedge[b] = bp;
   }
-  if (!listIds) return { created: {}, rewired: {} };
-  return { created: {}, rewired: { halfedges, vertices: Int32Array.from(vertices), faces } };
 }
 
 /** The new place of each old vertex, three numbers per vertex. */

@@ -12,9 +12,8 @@
  * arithmetic (the new vertex on edge `e` is `V + e`, the three edges that cut the corners of face
  * `f` are `2E + 3f … 2E + 3f + 2`), so each pass writes every pointer of an element once, in a plain
  * loop. Each leaves a mesh that passes `validate()` (faces may have any number of sides in
- * between), and returns the ids it created and rewired for the phase that calls it, when asked
- * (`listIds`): a run straight through skips them, since the lists of a level of a million faces
- * take tens of megabytes of fresh memory, and filling fresh memory is what a level spends most on.
+ * between). What a step changed is not listed here: stepping, the phase that runs the step
+ * records it (`ChangeRecorder.wholeMesh`), and straight through no one asks.
  *
  * Vertex attributes: a new vertex takes the linear blend of its sources for attributes of three
  * floats that interpolate linearly (positions, normals, colours as floats; see `stencil.ts`) and the
@@ -23,19 +22,7 @@
  */
 import type { AttributeArray } from '../attributes.js';
 import type { HalfedgeMesh } from '../mesh.js';
-import { type ElementIds, idRange } from '../operation.js';
 import { faceCentroids, isBlended } from './stencil.js';
-
-/** The ids a topology step reports: what it added, and which existing elements it re-linked. */
-export interface TopologyChange {
-  created: ElementIds;
-  rewired: ElementIds;
-}
-
-/** `idRange(start, end)` when ids are listed, else nothing. */
-export function range(listIds: boolean, start: number, end: number): Int32Array | undefined {
-  return listIds ? idRange(start, end) : undefined;
-}
 
 /** The first id of each kind that `appendSlots` added. */
 export interface FirstIds {
@@ -82,10 +69,9 @@ export function appendSlots(mesh: HalfedgeMesh, vertices: number, edges: number,
  * The new vertices are put evenly along their edges (`placeOnEdges`), unless `blendedInPlace`
  * says the caller has already written their blended attributes (see `stencil.ts`) where they end.
  */
-export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces: number, listIds: boolean, blendedInPlace = false): TopologyChange {
+export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces: number, blendedInPlace = false): void {
   const V = mesh.vertexSlots;
   const E = mesh.edgeSlots;
-  const F = mesh.faceSlots;
   const list = edges === 'all' ? null : edges;
   const count = list === null ? E : list.length;
   const edgeAt = (i: number) => (list === null ? i : list[i]);
@@ -112,11 +98,6 @@ export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces
     const i = order === null ? g >> 1 : order[g >> 1];
     return 2 * (E + perEdge * i + perEdge - 1);
   };
-  // re-linked: both halfedges of each split edge, the neighbours not split, the ends and faces
-  const rewiredNeighbours: number[] = [];
-  const rewiredVertices: number[] = [];
-  const rewiredFaces = listIds ? new Uint8Array(F) : null;
-
   // each iteration reads only the old pointers of its own two halfedges (a neighbour that is split
   // too links itself), so the arrays can be rewritten in place
   for (let i = 0; i < count; i++) {
@@ -156,23 +137,11 @@ export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces
     hePrev[h] = lastPieceOf(hPrev);
     heNext[t] = firstPieceOf(tNext);
     hePrev[bOut] = lastPieceOf(tPrev);
-    if (!isSplit(hNext)) {
-      hePrev[hNext] = forward;
-      if (listIds) rewiredNeighbours.push(hNext);
-    }
-    if (!isSplit(tPrev)) {
-      heNext[tPrev] = bOut;
-      if (listIds) rewiredNeighbours.push(tPrev);
-    }
+    if (!isSplit(hNext)) hePrev[hNext] = forward;
+    if (!isSplit(tPrev)) heNext[tPrev] = bOut;
     // start each face at a new vertex
-    if (hFace !== -1) {
-      fHalfedge[hFace] = heNext[h];
-      if (rewiredFaces !== null) rewiredFaces[hFace] = 1;
-    }
-    if (tFace !== -1) {
-      fHalfedge[tFace] = t;
-      if (rewiredFaces !== null) rewiredFaces[tFace] = 1;
-    }
+    if (hFace !== -1) fHalfedge[hFace] = heNext[h];
+    if (tFace !== -1) fHalfedge[tFace] = t;
   }
   // an old vertex that left by the odd halfedge of a split edge now leaves by its last piece: one
   // pass in vertex order (asking at each edge whether its far end left by it reads at random)
@@ -180,19 +149,7 @@ export function splitEdges(mesh: HalfedgeMesh, edges: Int32Array | 'all', pieces
     const h = vHalfedge[v];
     if (h < 0 || (h & 1) === 0 || !isSplit(h)) continue;
     vHalfedge[v] = firstPieceOf(h);
-    if (listIds) rewiredVertices.push(v);
   }
-  if (!listIds) return { created: {}, rewired: {} };
-  const rewiredHalfedges = new Int32Array(2 * count + rewiredNeighbours.length);
-  for (let i = 0; i < count; i++) {
-    rewiredHalfedges[2 * i] = 2 * edgeAt(i);
-    rewiredHalfedges[2 * i + 1] = 2 * edgeAt(i) + 1;
-  }
-  rewiredHalfedges.set(rewiredNeighbours, 2 * count);
-  return {
-    created: { vertices: idRange(V, V + added), edges: idRange(E, E + added) },
-    rewired: { halfedges: rewiredHalfedges, vertices: Int32Array.from(rewiredVertices), faces: marked(rewiredFaces!) },
-  };
 }
 
 /**
@@ -237,13 +194,12 @@ function placeOnEdges(mesh: HalfedgeMesh, count: number, edgeAt: (i: number) => 
  * New edge `E + 3f + i` joins `m_i` and `m_(i+1)`: its even halfedge runs `m_i → m_(i+1)` inside the
  * middle triangle, its odd one back along the corner triangle.
  */
-export function cutCorners(mesh: HalfedgeMesh, listIds: boolean): TopologyChange {
+export function cutCorners(mesh: HalfedgeMesh): void {
   const F = mesh.faceSlots;
   const first = appendSlots(mesh, 0, 3 * F, 3 * F);
   const E = first.edge;
   const { heNext, hePrev, heVertex, heFace, fHalfedge } = mesh;
   const copyFaceAttributes = mesh.faceAttributes.size > 0;
-  const rewired = listIds ? new Int32Array(6 * F) : null; // the hexagons' halfedges, all re-linked
 
   for (let f = 0; f < F; f++) {
     const firstEdge = E + 3 * f;
@@ -268,18 +224,10 @@ export function cutCorners(mesh: HalfedgeMesh, listIds: boolean): TopologyChange
       heNext[inner] = i < 2 ? inner + 2 : 2 * firstEdge;
       hePrev[inner] = i > 0 ? inner - 2 : 2 * firstEdge + 4;
       if (copyFaceAttributes) mesh.faceAttributes.copy(corner, f);
-      if (rewired !== null) {
-        rewired[6 * f + 2 * i] = g;
-        rewired[6 * f + 2 * i + 1] = gOut;
-      }
       g = gNext;
     }
     fHalfedge[f] = 2 * firstEdge;
   }
-  return {
-    created: { edges: range(listIds, E, E + 3 * F), faces: range(listIds, F, 4 * F) },
-    rewired: { halfedges: rewired ?? undefined, faces: range(listIds, 0, F) },
-  };
 }
 
 /**
@@ -290,7 +238,7 @@ export function cutCorners(mesh: HalfedgeMesh, listIds: boolean): TopologyChange
  * left alone when `blendedInPlace` says the caller has already written it there (`faceCentroids`);
  * the others take the value of the face's first corner.
  */
-export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', listIds: boolean, oldVertices = Infinity, blendedInPlace = false): TopologyChange {
+export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', oldVertices = Infinity, blendedInPlace = false): number {
   const count = faces === 'all' ? mesh.faceSlots : faces.length;
   const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
   const { vertex: V } = appendSlots(mesh, count, 0, 0);
@@ -304,7 +252,7 @@ export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', lis
     const { data, itemSize: n } = attribute;
     for (let i = 0; i < count; i++) copyItem(data, n, V + i, heVertex[fHalfedge[faceAt(i)]]);
   }
-  return { created: { vertices: range(listIds, V, V + count) }, rewired: {} };
+  return V;
 }
 
 /**
@@ -322,24 +270,13 @@ export function addFacePoints(mesh: HalfedgeMesh, faces: Int32Array | 'all', lis
  * Each spoke is a new edge whose even halfedge leaves the centre, numbered face after face; the
  * piece of the face after its first spoke keeps the face id, the others are new faces, in order.
  */
-export function fanFaces(mesh: HalfedgeMesh, faces: Int32Array | 'all', firstCentre: number, stride: number, listIds: boolean): TopologyChange {
+export function fanFaces(mesh: HalfedgeMesh, faces: Int32Array | 'all', firstCentre: number, stride: number): FirstIds {
   const count = faces === 'all' ? mesh.faceSlots : faces.length;
   const faceAt = (i: number) => (faces === 'all' ? i : faces[i]);
   const spokes = cornersOf(mesh, faces) / stride;
   const first = appendSlots(mesh, 0, spokes, spokes - count);
-  const rewired = listIds ? new Int32Array(stride * spokes) : null; // the faces' own halfedges, all re-linked
-  fanRange(mesh, { faceAt, begin: 0, end: count, spoke: 0 }, first, firstCentre, stride, rewired);
-  return {
-    created: {
-      edges: range(listIds, first.edge, first.edge + spokes),
-      faces: range(listIds, first.face, first.face + spokes - count),
-    },
-    rewired: {
-      halfedges: rewired ?? undefined,
-      vertices: range(listIds, firstCentre, firstCentre + count), // isolated until now
-      faces: !listIds ? undefined : faces === 'all' ? idRange(0, count) : faces,
-    },
-  };
+  fanRange(mesh, { faceAt, begin: 0, end: count, spoke: 0 }, first, firstCentre, stride);
+  return first;
 }
 
 /** The listed faces `begin … end − 1` of a fan, the first of them with spoke number `spoke` (the spokes of the faces before). */
@@ -355,10 +292,9 @@ export interface FanRange {
  * disjoint slots (a face's own halfedges, its spokes and its pieces), so two threads may fan two
  * ranges at once (see `shared-fan.ts`).
  */
-export function fanRange(mesh: HalfedgeMesh, { faceAt, begin, end, spoke }: FanRange, first: FirstIds, firstCentre: number, stride: number, rewired: Int32Array | null): void {
+export function fanRange(mesh: HalfedgeMesh, { faceAt, begin, end, spoke }: FanRange, first: FirstIds, firstCentre: number, stride: number): void {
   const { heNext, hePrev, heVertex, heFace, vHalfedge, fHalfedge } = mesh;
   const copyFaceAttributes = mesh.faceAttributes.size > 0;
-  let r = stride * spoke;
   for (let i = begin; i < end; i++) {
     const f = faceAt(i);
     const centre = firstCentre + i;
@@ -376,11 +312,9 @@ export function fanRange(mesh: HalfedgeMesh, { faceAt, begin, end, spoke }: FanR
       // the face's own halfedges from this corner to the next one joined
       let last = g;
       heFace[g] = piece;
-      if (rewired !== null) rewired[r++] = g;
       for (let s = 1; s < stride; s++) {
         last = heNext[last];
         heFace[last] = piece;
-        if (rewired !== null) rewired[r++] = last;
       }
       g = heNext[last];
       const back = g === start ? firstSpoke + 1 : out + 3; // next corner → centre
@@ -408,16 +342,6 @@ function cornersOf(mesh: HalfedgeMesh, faces: Int32Array | 'all'): number {
     for (const f of faces) corners += mesh.faceDegree(f);
   }
   return corners;
-}
-
-/** The indices where `marks` is 1. */
-export function marked(marks: Uint8Array): Int32Array {
-  let count = 0;
-  for (let i = 0; i < marks.length; i++) count += marks[i];
-  const ids = new Int32Array(count);
-  let k = 0;
-  for (let i = 0; i < marks.length; i++) if (marks[i] === 1) ids[k++] = i;
-  return ids;
 }
 
 /** Element `dst` takes the `n` values of element `src`. */

@@ -6,8 +6,9 @@
  * element's attribute values before their first write); at the end, `result()` gives the change
  * record (which undoes and redoes the edit, and patches the page's copy of the mesh) and the
  * pointer fields whose value really changed, old → new, in the same form and order as
- * `diffPointers(before, after)` would list them. Without recording, a write is just the store,
- * which is what bulk callers (decimation, the plane cut) want.
+ * `diffPointers(before, after)` would list them. A phase made of many edits (a batch of
+ * collapses) gives its writers one recorder to share; run straight through, it records nothing and
+ * a write is just the store.
  *
  * ```
  *   next(h) is 7
@@ -16,11 +17,12 @@
  *   result()            ──► { halfedge h, next: 7 → 9 }  (nothing at all had it ended as 7)
  * ```
  */
-import { type ChangeRecord, ChangeRecorder, pointerDiffOf } from '../change.js';
-import type { PointerChange } from '../diff.js';
+import { type ChangeRecord, pointerDiffOf } from './record.js';
+import { ChangeRecorder } from './recorder.js';
+import type { PointerChange } from './diff.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { attributeSetOf, type ElementKind, meshArrayIndex } from '../mesh-arrays.js';
-import type { ElementIds } from '../operation.js';
+import type { ElementIds } from './operation.js';
 
 export interface EditOptions {
   /**
@@ -28,13 +30,13 @@ export interface EditOptions {
    * (decimation) pass false: the edit then costs only its stores.
    */
   record?: boolean;
+  /**
+   * Write the record here instead of one of the edit's own: a phase made of many edits (a batch
+   * of collapses, the cut's splits) keeps one record of them all. The edit's `record` is then null.
+   */
+  recorder?: ChangeRecorder | null;
   /** List the elements the edit adds and deletes in `created` and `removed` (default true). */
   ids?: boolean;
-  /**
-   * List the elements that existed before and had a pointer written in `rewired` (default false):
-   * what a bulk phase that does not record says it changed, so its diff compares only those.
-   */
-  rewired?: boolean;
 }
 
 /** What a local edit did. */
@@ -47,8 +49,6 @@ export interface EditResult {
   created: ElementIds;
   /** Elements the edit deleted (marked deleted, not compacted: the other ids stay valid). */
   removed: ElementIds;
-  /** Elements that existed before and had a pointer written, when asked for (`rewired: true`). */
-  rewired?: ElementIds;
 }
 
 /** An edit that makes or keeps one vertex of interest: the new vertex of a split, the survivor of a collapse. */
@@ -76,52 +76,47 @@ const { vDeleted: VERTEX_DELETED, eDeleted: EDGE_DELETED, fDeleted: FACE_DELETED
 
 export class PointerWriter {
   private readonly recorder: ChangeRecorder | null;
+  /** Whether the record is this writer's own (else a phase's, which its caller reads). */
+  private readonly ownRecord: boolean;
   private readonly createdIds: IdLists | null;
   private readonly removedIds: IdLists | null;
-  private readonly rewired: Rewired | null;
 
   constructor(
     readonly mesh: HalfedgeMesh,
     options: EditOptions = {},
   ) {
-    this.recorder = options.record === false ? null : new ChangeRecorder(mesh);
+    this.ownRecord = options.recorder === undefined && options.record !== false;
+    this.recorder = options.recorder !== undefined ? options.recorder : options.record === false ? null : new ChangeRecorder(mesh);
     const ids = options.ids !== false;
     this.createdIds = ids ? { vertices: [], edges: [], faces: [] } : null;
     this.removedIds = ids ? { vertices: [], edges: [], faces: [] } : null;
-    this.rewired = options.rewired ? new Rewired(mesh) : null;
   }
 
   /** `next(h) = n` and `prev(n) = h`: the two always change together. */
   link(h: number, n: number): void {
     this.recorder?.field(NEXT, h);
     this.recorder?.field(PREV, n);
-    this.rewired?.halfedge(h);
-    this.rewired?.halfedge(n);
     this.mesh.heNext[h] = n;
     this.mesh.hePrev[n] = h;
   }
 
   setOrigin(h: number, v: number): void {
     this.recorder?.field(ORIGIN, h);
-    this.rewired?.halfedge(h);
     this.mesh.heVertex[h] = v;
   }
 
   setFace(h: number, f: number): void {
     this.recorder?.field(FACE, h);
-    this.rewired?.halfedge(h);
     this.mesh.heFace[h] = f;
   }
 
   setVertexHalfedge(v: number, h: number): void {
     this.recorder?.field(VERTEX_HALFEDGE, v);
-    this.rewired?.vertex(v);
     this.mesh.vHalfedge[v] = h;
   }
 
   setFaceHalfedge(f: number, h: number): void {
     this.recorder?.field(FACE_HALFEDGE, f);
-    this.rewired?.face(f);
     this.mesh.fHalfedge[f] = h;
   }
 
@@ -194,39 +189,13 @@ export class PointerWriter {
 
   /** The change record and the pointer changes (old → new, unchanged fields left out), and the elements added and deleted. */
   result(): EditResult {
-    const record = this.recorder?.record() ?? null;
+    const record = this.ownRecord ? this.recorder!.record() : null;
     return {
       changes: record ? pointerDiffOf(record, Infinity).changes : [],
       record,
       created: toIds(this.createdIds),
       removed: toIds(this.removedIds),
-      rewired: this.rewired?.ids(),
     };
-  }
-}
-
-/** The elements of the mesh as it was when writing began whose pointers were written, each once. */
-class Rewired {
-  private readonly slots: { vertices: number; halfedges: number; faces: number };
-  private readonly seen = { vertices: new Set<number>(), halfedges: new Set<number>(), faces: new Set<number>() };
-
-  constructor(mesh: HalfedgeMesh) {
-    this.slots = { vertices: mesh.vertexSlots, halfedges: mesh.halfedgeSlots, faces: mesh.faceSlots };
-  }
-
-  halfedge(h: number): void {
-    if (h < this.slots.halfedges) this.seen.halfedges.add(h);
-  }
-  vertex(v: number): void {
-    if (v < this.slots.vertices) this.seen.vertices.add(v);
-  }
-  face(f: number): void {
-    if (f < this.slots.faces) this.seen.faces.add(f);
-  }
-
-  ids(): ElementIds {
-    const { vertices, halfedges, faces } = this.seen;
-    return { vertices: Int32Array.from(vertices), halfedges: Int32Array.from(halfedges), faces: Int32Array.from(faces) };
   }
 }
 
