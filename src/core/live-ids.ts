@@ -72,6 +72,8 @@ export class LiveIds {
    * Only the ids the change touched are looked at; the runs of dead ids between them are copied whole.
    */
   after(mesh: HalfedgeMesh, kind: ListedKind, change: ChangeRecord): LiveIds {
+    // a change that wrote whole ranges (a phase) touched more than a pass over the flags costs
+    if (change.ranges.length > 0) return LiveIds.of(mesh, kind);
     const { dead } = this;
     const touched = liveIdsTouched(change, kind);
     const slots = slotCount(mesh, kind);

@@ -4,13 +4,13 @@
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
 import { type Box3, Vector3 } from 'three';
-import { DIFF_LISTED, type HalfedgeMesh, type PointerDiff, type SerializedMesh, serializeMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
+import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
 import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
 import type { PageSnapshot as Snapshot } from '../workers/page-copy.js';
 import { type EditRequest, type SolutionCall, solutionCall } from '../workers/operations.js';
 import { PICK_IN_WORKER_ABOVE, type RenderPatch, type StudentVerb, type VerbArguments } from '../workers/protocol.js';
-import { pointerChangeOf } from '../core/practice/writes.js';
+import { recordWrites } from '../core/practice/writes.js';
 import { byId, capitalized, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, quizHighlight } from './highlights.js';
 import { boundaryLoopList, incidentBounds, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
@@ -42,7 +42,7 @@ import { repairStory } from './repair-story.js';
 import { ViewDetail } from './view-detail.js';
 import { cutPlaneOnShow, explodedMesh, explodedRender, explodeOffsets } from './explode.js';
 import { adjustable, DragAdjust } from './drag-adjust.js';
-import { type CommandTarget, commands, displayKey } from './commands.js';
+import { type CommandTarget, commands, commandTooltip } from './commands.js';
 import { elementName, exists, isMove, type Move, type Selection } from './selection.js';
 import { isRight } from './quiz.js';
 import { encodeViewState, openedEntry, type ReplayStep, replayable, type ViewState } from './share.js';
@@ -412,10 +412,10 @@ export class App {
       this.say(run.message, 'alert');
       return null;
     }
-    const changes = run.writes.map(pointerChangeOf).filter((change) => change !== null);
-    const diff = { total: changes.length, changes: changes.slice(0, DIFF_LISTED) };
+    // the writes as a record on a copy of the mesh in view, sent as the library's edits are
+    const record = recordWrites(mesh.clone(), run.writes);
     const label = `${call.label} (your code)`;
-    const snapshot = await this.run(() => this.client.solution(serializeMesh(run.mesh!), label, diff, call.exercise));
+    const snapshot = await this.run(() => this.client.solution(record, label, call.exercise));
     if (snapshot) this.say(`${capitalized(label)}: ${run.writes.length} write${run.writes.length === 1 ? '' : 's'}. ${run.message ? `${run.message} ` : ''}Ctrl+Z undoes it.`);
     return snapshot;
   }
@@ -539,8 +539,7 @@ export class App {
   private drawCommandButtons(): void {
     for (const command of commands) {
       if (!command.button || !command.unavailable) continue;
-      const keys = command.keys.map(displayKey).join(', ');
-      const tip = `${capitalized(command.help(this.inspection.convention))}${keys ? ` (${keys})` : ''}`;
+      const tip = commandTooltip(command, this.inspection.convention);
       setAvailability(this.byId<HTMLButtonElement>(command.button.id), command.button.label, command.unavailable(this.commandTarget), tip);
     }
   }

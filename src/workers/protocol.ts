@@ -267,8 +267,11 @@ export const snapshotVerbs = {
   restore: takes<[mesh: SerializedMesh, label: string]>(),
   /** Shows a state of a practice run, with the write that led to it as the diff; replaces the practice state shown before. */
   practice: takes<[mesh: SerializedMesh, label: string, diff: PointerDiff | null]>(),
-  /** Makes the mesh a student's solution left (valid: the page checked it) the current mesh, an entry undo takes back. */
-  solution: takes<[mesh: SerializedMesh, label: string, diff: PointerDiff | null, exercise: string]>(),
+  /**
+   * Applies the record of a student's solution's writes on the current mesh (valid: the page
+   * checked it) as an edit: an entry undo takes back, sent to the page as a patch.
+   */
+  solution: takes<[change: ChangeRecord, label: string, exercise: string]>(),
   /** The current snapshot, with the whole mesh. */
   snapshot: takes<[]>(),
 };

@@ -13,12 +13,14 @@
  */
 import {
   type BuildReport,
+  applyChange,
   type ChangeRecord,
   deserializeMesh,
   type HalfedgeMesh,
   invertChange,
   meshFingerprint,
   type Operation,
+  type Phase,
   noChange,
   onlyChangesValues,
   phaseElements,
@@ -59,10 +61,10 @@ interface Stepping {
   startPositions: Float64Array<ArrayBuffer> | null;
   operation: Operation;
   phases: number;
-  phase: ShownPhase | null;
-  diff: PointerDiff | null;
-  /** The record of the last phase run (null before the first): the page's patch. */
-  change: ChangeRecord | null;
+  /** The last phase run (null before the first), its record the page's patch. */
+  phase: Phase | null;
+  /** How the last phase is shown (its marks and pointer diff), worked out when first sent: a run to the end shows only its last. */
+  shown: { phase: ShownPhase; diff: PointerDiff } | null;
 }
 
 /** Pointer changes a phase's diff lists (all are counted). */
@@ -130,14 +132,13 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
   }
 
   /**
-   * Makes the mesh a student's solution left the current mesh ("Use my code"): an entry of its
-   * own, which undo takes back like an edit. The page has checked it is valid.
+   * Applies what a student's solution wrote on the current mesh ("Use my code"), as the record
+   * the page made of its writes on its copy of this mesh: an edit like the library's, which undo
+   * takes back and the page gets as a patch. The page has checked the result is valid.
+   * @throws TopologyError when the record does not start from the current mesh.
    */
-  solution(serialized: SerializedMesh, label: string, diff: PointerDiff | null, exercise: string): Snapshot {
-    this.abandonStepping();
-    this.history.pushMesh(label, deserializeMesh(serialized), { source: { kind: 'solution', exercise }, report: null, file: null, phase: null, diff });
-    this.state++;
-    return this.send(null, -1);
+  solution(change: ChangeRecord, label: string, exercise: string): Snapshot {
+    return this.applyRecord(change, label, { kind: 'solution', exercise });
   }
 
   /** Starts stepping an operation (on a copy, or in place when it only moves vertices); nothing changes until `step`. */
@@ -223,11 +224,28 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
   edit(request: EditRequest): Snapshot {
     const from = this.state;
     const undone = this.abandonStepping();
+    const result = applyEdit(this.currentMesh(), request); // throws, leaving the session as it was
+    return this.recorded(result.record!, result.label, { kind: 'edit', request }, from, undone);
+  }
+
+  /** Applies a change written elsewhere (a solution's, on the page) to the current mesh, as an edit. */
+  private applyRecord(change: ChangeRecord, label: string, source: HistorySource): Snapshot {
+    const from = this.state;
+    const undone = this.abandonStepping();
     const mesh = this.currentMesh();
-    const result = applyEdit(mesh, request); // throws, leaving the session as it was
-    const record = result.record!;
-    this.history.pushChange(result.label, record, {
-      source: { kind: 'edit', request },
+    const { before } = change;
+    const state = mesh.slotState;
+    if (Object.keys(before).some((key) => before[key as keyof typeof before] !== state[key as keyof typeof state])) {
+      throw new TopologyError(`${label} was made on another mesh than the current one (its slots differ): nothing was changed`);
+    }
+    applyChange(mesh, change, 'forward');
+    return this.recorded(change, label, source, from, undone);
+  }
+
+  /** Makes the change just made to the current mesh a history entry, and sends it. */
+  private recorded(record: ChangeRecord, label: string, source: HistorySource, from: number, undone: ChangeRecord | null): Snapshot {
+    this.history.pushChange(label, record, {
+      source,
       report: null,
       file: this.history.entry()!.info.file,
       phase: null,
@@ -326,8 +344,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
       details: { ...this.lastDetails, pending: patch !== null },
       report,
       file: info.file,
-      phase: stepping ? stepping.phase : info.phase,
-      diff: stepping ? stepping.diff : info.diff,
+      ...(stepping ? shownPhase(stepping) : { phase: info.phase, diff: info.diff }),
       colours: vertexColours(mesh, (stepping ?? this.ended)?.phase ?? null),
       stepping: steppingState(stepping),
       ended: steppingState(this.ended),
@@ -348,23 +365,17 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const working = inPlace ? current : current.clone();
     const { operation, phases } = startOperation(working, request);
     const startPositions = inPlace ? positionsOf(current) : null;
-    this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, diff: null, change: null };
+    this.stepping = { label: operationLabel(request), request, total: phases, working, startPositions, operation, phases: 0, phase: null, shown: null };
     return this.stepping;
   }
 
-  /**
-   * Runs the operation's next phase, if it has one (false when it has finished instead), and
-   * keeps its record: the page's patch, the pointer diff, and what the phase marks.
-   */
+  /** Runs the operation's next phase, if it has one (false when it has finished instead). */
   private advance(stepping: Stepping): boolean {
     const next = stepping.operation.next();
     if (next.done) return false;
     stepping.phases++;
-    const { change, ...phase } = next.value;
-    const record = change ?? noChange(stepping.working);
-    stepping.phase = { ...phase, ...phaseElements(record, PHASE_MARKS) };
-    stepping.diff = pointerDiffOf(record, DIFF_LIMIT);
-    stepping.change = record;
+    stepping.phase = { ...next.value, change: next.value.change ?? noChange(stepping.working) };
+    stepping.shown = null;
     return true;
   }
 
@@ -377,7 +388,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     // an operation that ends without another phase (decimation finds nothing more) changed nothing
     let change: ChangeRecord | null = noChange(working);
     if (this.advance(stepping)) {
-      change = stepping.change;
+      change = stepping.phase!.change!;
       if (stepping.total === null || stepping.phases < stepping.total) return change;
       // that was the last announced phase: let the operation finish now, so no empty step follows;
       // one that had more to do than it announced shows that phase as well, and stops predicting
@@ -392,8 +403,7 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
       source: { kind: 'operation', request: stepping.request },
       report: null,
       file: this.history.entry()!.info.file,
-      phase: stepping.phase,
-      diff: stepping.diff,
+      ...shownPhase(stepping),
     };
     if (stepping.startPositions) this.history.pushChange(stepping.label, positionsChange(working, stepping.startPositions), info);
     else this.history.pushMesh(stepping.label, working, info);
@@ -428,12 +438,21 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
   }
 }
 
+/** The last phase as the page shows it: what it marks and its pointer diff, read off its record once. */
+function shownPhase(stepping: Stepping): { phase: ShownPhase | null; diff: PointerDiff | null } {
+  const { phase } = stepping;
+  if (!phase) return { phase: null, diff: null };
+  const { change, ...rest } = phase;
+  stepping.shown ??= { phase: { ...rest, ...phaseElements(change!, PHASE_MARKS) }, diff: pointerDiffOf(change!, DIFF_LIMIT) };
+  return stepping.shown;
+}
+
 function steppingState(stepping: Stepping | null): SteppingState | null {
   return stepping ? { label: stepping.label, phases: stepping.phases, total: stepping.total } : null;
 }
 
 /** The colours of a phase's per-vertex values (one per vertex slot), if it reports them. */
-function vertexColours(mesh: HalfedgeMesh, phase: ShownPhase | null): ColourScale | null {
+function vertexColours(mesh: HalfedgeMesh, phase: Phase | null): ColourScale | null {
   const values = phase?.values?.vertices;
   return values && values.length === mesh.vertexSlots ? colourScale(values) : null;
 }

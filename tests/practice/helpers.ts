@@ -4,7 +4,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { type HalfedgeMesh, serializeMesh, validate, type Violation } from '../../src/core/index.js';
-import { applyWrite, findExercise, gradeSolution, type GradeReport, keyOf, type PracticeWrite, type RunOutput, SolutionError, type SolutionRunner } from '../../src/core/practice/index.js';
+import { applyWrite, findExercise, gradeSolution, type GradeReport, keyOf, type PracticeWrite, replayWriter, type RunOutput, SolutionError, type SolutionRunner } from '../../src/core/practice/index.js';
 import { type SandboxMessage, serveRequest } from '../../src/workers/practice-sandbox.js';
 
 export const inProcess: SolutionRunner = async (source, runs) => {
@@ -51,8 +51,9 @@ export function brokenSinceByValidating(before: HalfedgeMesh, writes: readonly P
   let failing = failingIn(before);
   for (const key of failing) onset.set(key, -1);
   const mesh = before.clone();
+  const writer = replayWriter(mesh);
   writes.forEach((write, i) => {
-    applyWrite(mesh, write);
+    applyWrite(writer, write);
     const now = failingIn(mesh);
     for (const key of now) if (!failing.has(key)) onset.set(key, i);
     failing = now;

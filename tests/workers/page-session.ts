@@ -22,6 +22,7 @@ export interface PageSession {
   runToEnd(): Promise<PageSnapshot>;
   cancel(): PageSnapshot;
   edit(...args: Parameters<EditingSession['edit']>): PageSnapshot;
+  solution(...args: Parameters<EditingSession['solution']>): PageSnapshot;
   undo(): PageSnapshot;
   redo(): PageSnapshot;
   jump(index: number): PageSnapshot;
@@ -49,6 +50,7 @@ export function pageSession(session: EditingSession): PageSession {
     runToEnd: async () => take(await session.runToEnd()),
     cancel: () => take(session.cancel()),
     edit: (request) => take(session.edit(request)),
+    solution: (...args) => take(session.solution(...args)),
     undo: () => take(session.undo()),
     redo: () => take(session.redo()),
     jump: (index) => take(session.jump(index)),

@@ -100,6 +100,18 @@ export class PointerWriter {
     this.mesh.hePrev[n] = h;
   }
 
+  /** `next(h) = n` alone (a student's code writes `next` and `prev` apart; an edit links both). */
+  setNext(h: number, n: number): void {
+    this.recorder?.field(NEXT, h);
+    this.mesh.heNext[h] = n;
+  }
+
+  /** `prev(h) = p` alone. */
+  setPrev(h: number, p: number): void {
+    this.recorder?.field(PREV, h);
+    this.mesh.hePrev[h] = p;
+  }
+
   setOrigin(h: number, v: number): void {
     this.recorder?.field(ORIGIN, h);
     this.mesh.heVertex[h] = v;

@@ -35,7 +35,7 @@ import { checkFace, checkHalfedge, checkParallelEdges, checkVertex, type Fail, V
 import type { HalfedgeMesh } from '../mesh.js';
 import { type ElementKind, elementKinds, meshArrayIndex, type MeshArrayName, meshArrays } from '../mesh-arrays.js';
 import { lowerEnd } from '../validate.js';
-import { applyWrite, pointerArrayOf, type PracticeWrite } from './writes.js';
+import { applyWrite, pointerArrayOf, type PracticeWrite, replayWriter } from './writes.js';
 
 /** How a violation is told apart from another: its invariant and the elements it names. */
 export function keyOf(v: Violation): string {
@@ -87,6 +87,7 @@ export function brokenSince(before: HalfedgeMesh, writes: readonly PracticeWrite
     if (array === HE_VERTEX) oldOrigins.push(index, index < mesh.halfedgeSlots ? mesh.heVertex[index] : -1);
   };
   const due = new Set<Watch>();
+  const writer = replayWriter(mesh);
   const wake = (field: number) => {
     const set = watchers.get(field);
     if (set) for (const watch of set) due.add(watch);
@@ -96,7 +97,7 @@ export function brokenSince(before: HalfedgeMesh, writes: readonly PracticeWrite
     changed.length = 0;
     oldOrigins.length = 0;
     fieldsOf(write, note);
-    applyWrite(mesh, write);
+    applyWrite(writer, write);
     for (let k = 0; k < changed.length; k++) wake(changed[k]);
     for (let k = 0; k < oldOrigins.length; k += 2) {
       const h = oldOrigins[k];

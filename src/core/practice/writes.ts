@@ -1,7 +1,9 @@
 /**
  * What a student's code wrote, one entry per store, in the order it happened, with the source line
  * that made it. The same list replays onto the mesh the code was given (`replayWrites`), so the
- * grader rebuilds the result outside the sandbox and the page shows the mesh after any write.
+ * grader rebuilds the result outside the sandbox and the page shows the mesh after any write. A
+ * replay writes through a `PointerWriter`, as the library's edits do: recorded (`recordWrites`),
+ * the writes become a change record, which "Use my code" sends to the session as it sends an edit's.
  *
  * ```
  *   setNext(h4, h9) at line 12  ──►  { field: 'next', index: 4, old: 5, new: 9, line: 12 }
@@ -10,6 +12,8 @@
  * ```
  */
 import type { PointerChange } from '../change/diff.js';
+import type { ChangeRecord } from '../change/record.js';
+import { PointerWriter } from '../change/writer.js';
 import type { HalfedgeMesh } from '../mesh.js';
 import { type ElementKind, slotCount } from '../mesh-arrays.js';
 
@@ -34,38 +38,52 @@ export const pointerArrayOf = {
   faceHalfedge: 'fHalfedge',
 } as const satisfies Record<PointerWriteField, keyof HalfedgeMesh>;
 
-/** Applies one write to `mesh` (which must be as it was before that write). */
-export function applyWrite(mesh: HalfedgeMesh, write: PracticeWrite): void {
+/** Applies one write through `w` to its mesh (which must be as it was before that write). */
+export function applyWrite(w: PointerWriter, write: PracticeWrite): void {
+  const { mesh } = w;
   switch (write.field) {
     case 'position':
-      mesh.setPosition(write.index, write.new[0], write.new[1], write.new[2]);
+      w.setPosition(write.index, write.new[0], write.new[1], write.new[2]);
       return;
-    case 'newVertex':
-      expectId(mesh.addVertex(write.new[0], write.new[1], write.new[2]), write);
+    case 'newVertex': {
+      const v = w.addVertex();
+      expectId(v, write);
+      w.setPosition(v, write.new[0], write.new[1], write.new[2]);
       return;
+    }
     case 'newEdge':
-      expectId(mesh.addEdge(), write);
+      expectId(w.addEdge(), write);
       return;
     case 'newFace':
-      expectId(mesh.addFace(), write);
+      expectId(w.addFace(), write);
       return;
     case 'deleteVertex':
-      mesh.deleteVertex(write.index);
+      w.deleteVertex(write.index);
       return;
     case 'deleteEdge':
-      mesh.deleteEdge(write.index);
+      w.deleteEdge(write.index);
       return;
     case 'deleteFace':
-      mesh.deleteFace(write.index);
+      w.deleteFace(write.index);
       return;
     default: {
       // the mesh API writes -1 or an element that exists (which the first-broken search relies on)
       const kind = pointerKindOf[write.field];
       if (write.new < -1 || write.new >= slotCount(mesh, kind)) throw new Error(`replaying ${describeWrite(write)}: there is no ${kind} ${write.new} yet`);
-      mesh[pointerArrayOf[write.field]][write.index] = write.new;
+      setPointer[write.field](w, write.index, write.new);
     }
   }
 }
+
+/** Each pointer field's write, through the writer. */
+const setPointer: Record<PointerWriteField, (w: PointerWriter, index: number, value: number) => void> = {
+  next: (w, h, n) => w.setNext(h, n),
+  prev: (w, h, p) => w.setPrev(h, p),
+  origin: (w, h, v) => w.setOrigin(h, v),
+  face: (w, h, f) => w.setFace(h, f),
+  vertexHalfedge: (w, v, h) => w.setVertexHalfedge(v, h),
+  faceHalfedge: (w, f, h) => w.setFaceHalfedge(f, h),
+};
 
 /** The kind of element each pointer field names. */
 const pointerKindOf = {
@@ -77,10 +95,26 @@ const pointerKindOf = {
   faceHalfedge: 'halfedge',
 } as const satisfies Record<PointerWriteField, ElementKind>;
 
+/** A writer that replays writes onto `mesh`, recording nothing. */
+export function replayWriter(mesh: HalfedgeMesh): PointerWriter {
+  return new PointerWriter(mesh, { record: false, ids: false });
+}
+
 /** `mesh` after the first `count` writes (all of them by default), applied in place. */
 export function replayWrites(mesh: HalfedgeMesh, writes: readonly PracticeWrite[], count = writes.length): HalfedgeMesh {
-  for (let i = 0; i < count; i++) applyWrite(mesh, writes[i]);
+  const w = replayWriter(mesh);
+  for (let i = 0; i < count; i++) applyWrite(w, writes[i]);
   return mesh;
+}
+
+/**
+ * Replays the writes onto `mesh` (in place) and returns their change record: every field and
+ * value they changed, old → new, as an edit of the library's records it.
+ */
+export function recordWrites(mesh: HalfedgeMesh, writes: readonly PracticeWrite[]): ChangeRecord {
+  const w = new PointerWriter(mesh, { ids: false });
+  for (const write of writes) applyWrite(w, write);
+  return w.result().record!;
 }
 
 function expectId(id: number, write: PracticeWrite): void {

@@ -13,7 +13,7 @@ import { type GradeReport, gradeOnMesh, gradeSolution } from '../../core/practic
 import { whyNotDrawable } from '../../core/practice/drawable.js';
 import { MAX_VISITS, PRACTICE_API_NAMES } from '../../core/practice/mesh-api.js';
 import { SolutionError } from '../../core/practice/solution-error.js';
-import { applyWrite, describeWrite, pointerChangeOf, type PracticeWrite, replayWrites } from '../../core/practice/writes.js';
+import { applyWrite, describeWrite, pointerChangeOf, type PracticeWrite, replayWriter, replayWrites } from '../../core/practice/writes.js';
 import { el, replace, replaceKeepingFocus } from '../dom.js';
 import { fixtureFiles } from '../practice-link.js';
 import { readMarks, writeMarks } from '../practice-marks.js';
@@ -325,8 +325,9 @@ export class PracticePanel {
     const mesh = result.before.clone();
     let why = whyNotDrawable(mesh);
     let drawn = why ? -1 : 0;
+    const writer = replayWriter(mesh);
     for (let i = 0; i < write; i++) {
-      applyWrite(mesh, result.writes[i]);
+      applyWrite(writer, result.writes[i]);
       why = whyNotDrawable(mesh);
       if (!why) drawn = i + 1;
     }
