@@ -7,6 +7,7 @@
  * A command reaches the app through `CommandTarget`, the part of it that commands use: the table
  * knows nothing else of the app (and the app imports the table, not the other way round).
  */
+import { capitalized } from './dom.js';
 import type { Convention } from './records.js';
 import type { Move } from './selection.js';
 import type { StudentVerb } from '../workers/protocol.js';
@@ -53,6 +54,12 @@ export interface Command {
   /** Null when it applies now, else the sentence why not. */
   unavailable?(target: CommandTarget): string | null;
   run(target: CommandTarget): void;
+}
+
+/** A command's button's tooltip: what it does, and its keys. */
+export function commandTooltip(command: Command, convention: Convention): string {
+  const keys = command.keys.map(displayKey).join(', ');
+  return `${capitalized(command.help(convention))}${keys ? ` (${keys})` : ''}`;
 }
 
 const walk = (key: string, move: Move, help: string): Command => ({ name: `walk-${move}`, keys: [key], help: () => help, move: () => move, run: (t) => t.walk(move) });

@@ -1,13 +1,16 @@
 /**
  * How the page reaches the app: its buttons and menus, files picked or dropped, clicks and hovers
  * on the canvas, and the keys. Only wiring: a key or a toolbar button runs a command of the table
- * in commands.ts (which the automation runs too); a menu or a file calls the app.
+ * in commands.ts (which the automation runs too); a menu or a file calls the app, through
+ * `ControlsTarget`, the part of it the controls use (the app imports this file, not the other way).
  */
-import type { App } from './app.js';
-import { type Command, commands, displayKey, handleKey, runCommand } from './commands.js';
+import { type Command, commands, type CommandTarget, commandTooltip, displayKey, handleKey, runCommand } from './commands.js';
 import { byId } from './dom.js';
+import type { DragAdjust } from './drag-adjust.js';
+import type { Opening } from './opening.js';
 import type { Convention } from './records.js';
 import type { PickFilter } from './scene/picking.js';
+import type { Selection } from './selection.js';
 
 /** The tabs of the side bar, each a button `tab-…` over a pane `pane-…`. */
 export const tabs = ['inspect', 'operate', 'quiz', 'practice', 'file'] as const;
@@ -26,7 +29,23 @@ export interface ControlsHost {
   quickToPick: () => boolean;
 }
 
-export function wireControls(app: App, { root, input, canvas, quickToPick }: ControlsHost): void {
+/** What the controls ask of the app. */
+export interface ControlsTarget {
+  readonly opening: Pick<Opening, 'openFiles' | 'openSample'>;
+  filter: PickFilter;
+  readonly inspection: { readonly convention: Convention };
+  readonly commandTarget: CommandTarget;
+  readonly adjust: Pick<DragAdjust, 'down' | 'move' | 'up' | 'end'>;
+  readonly viewer: { readonly controls: { enabled: boolean } };
+  setConvention(convention: Convention): void;
+  toggleHelp(show?: boolean): void;
+  showTab(tab: Tab): void;
+  click(x: number, y: number): Promise<void>;
+  pickAt(x: number, y: number): Promise<Selection | null>;
+  hover(selection: Selection | null): void;
+}
+
+export function wireControls(app: ControlsTarget, { root, input, canvas, quickToPick }: ControlsHost): void {
   const find = <T extends HTMLElement = HTMLElement>(id: string) => byId<T>(root, id);
   const onClick = (id: string, run: () => void) => find(id).addEventListener('click', run);
   const onChange = (id: string, run: (value: string) => void) =>
@@ -124,14 +143,9 @@ export function wireControls(app: App, { root, input, canvas, quickToPick }: Con
 }
 
 /** A command's button: its name and tooltip from the table; a click runs the command (or says why it does not apply). */
-function wireButton(button: HTMLButtonElement, command: Command, app: App): void {
-  const keys = command.keys.map(displayKey).join(', ');
+function wireButton(button: HTMLButtonElement, command: Command, app: ControlsTarget): void {
   button.setAttribute('aria-label', command.button!.label);
-  if (keys) button.setAttribute('aria-keyshortcuts', command.keys.map(displayKey).join(' '));
-  button.title = `${capitalised(command.help(app.inspection.convention))}${keys ? ` (${keys})` : ''}`;
+  if (command.keys.length) button.setAttribute('aria-keyshortcuts', command.keys.map(displayKey).join(' '));
+  button.title = commandTooltip(command, app.inspection.convention);
   button.addEventListener('click', () => runCommand(app.commandTarget, command));
-}
-
-function capitalised(text: string): string {
-  return text.charAt(0).toUpperCase() + text.slice(1);
 }

@@ -175,95 +175,119 @@ export interface SolutionCall {
   label: string;
 }
 
-/** Each edit in one place: why it does not apply (null: it does), what it does, its history label, and its exercise. */
+/**
+ * Each edit in one place: why it does not apply (null: it does), what it does, its history label,
+ * its exercise, and its button in the Operate panel.
+ */
 interface EditDefinition<R extends EditRequest> {
   cannot(mesh: HalfedgeMesh, request: R): string | null;
   apply(mesh: HalfedgeMesh, request: R): EditResult;
   label(request: R): string;
   /** The exercise that practises this edit (none for the edits no exercise sets). */
   solution?(mesh: HalfedgeMesh, request: R): Omit<SolutionCall, 'label'> | null;
+  /** Its button, and what the selection must be for it (a face split has a form of its own instead). */
+  button?: { label: string; needs: EditNeeds };
 }
+
+/** What an edit's button acts on: the selected edge, vertex or face, the whole mesh, or two edges chosen one after the other. */
+export type EditNeeds = 'edge' | 'vertex' | 'face' | 'mesh' | 'two edges';
 
 type EditDefinitions = { [K in EditKind]: EditDefinition<Extract<EditRequest, { kind: K }>> };
 
 const editDefinitions: EditDefinitions = {
-  'flip-edge': { cannot: (m, r) => canFlipEdge(m, r.edge), apply: (m, r) => flipEdge(m, r.edge), label: (r) => `flip e${r.edge}`, solution: (_, r) => call('flip-edge', r.edge) },
+  'flip-edge': { cannot: (m, r) => canFlipEdge(m, r.edge), apply: (m, r) => flipEdge(m, r.edge), label: (r) => `flip e${r.edge}`, solution: (_, r) => call('flip-edge', r.edge), button: { label: 'Flip edge', needs: 'edge' } },
   'split-edge': {
     cannot: (m, r) => (r.triangulate ? canSplitEdgeTriangulated(m, r.edge) : canSplitEdge(m, r.edge)),
     apply: (m, r) => (r.triangulate ? splitEdgeTriangulated(m, r.edge) : splitEdge(m, r.edge)),
     label: (r) => (r.triangulate ? `split e${r.edge} (and its triangles)` : `split e${r.edge}`),
     // the exercise splits the triangles too
     solution: (_, r) => (r.triangulate ? call('split-edge', r.edge) : null),
+    button: { label: 'Split edge', needs: 'edge' },
   },
   'collapse-edge': {
     cannot: (m, r) => canCollapseEdge(m, r.edge),
     apply: (m, r) => collapseEdge(m, r.edge),
     label: (r) => `collapse e${r.edge}`,
     solution: (_, r) => call('collapse-edge', r.edge),
+    button: { label: 'Collapse edge', needs: 'edge' },
   },
-  'split-face': {
-    cannot: (m, r) => canSplitFace(m, r.face, r.from, r.to),
-    apply: (m, r) => splitFace(m, r.face, r.from, r.to),
-    label: (r) => `split f${r.face} from v${r.from} to v${r.to}`,
-  },
-  'poke-face': { cannot: (m, r) => canPokeFace(m, r.face), apply: (m, r) => pokeFace(m, r.face), label: (r) => `poke f${r.face}`, solution: (_, r) => call('inset-vertex', r.face) },
-  'erase-edge': { cannot: (m, r) => canMergeFaces(m, r.edge), apply: (m, r) => mergeFaces(m, r.edge), label: (r) => `erase e${r.edge}` },
-  'triangulate-face': { cannot: (m, r) => canTriangulateFace(m, r.face), apply: (m, r) => triangulateFace(m, r.face), label: (r) => `triangulate f${r.face}` },
-  'triangulate-mesh': {
-    cannot: (m) => (m.nFaces === 0 ? 'there are no faces to triangulate' : null),
-    apply: (m) => triangulateMesh(m),
-    label: () => 'triangulate every face',
-    solution: () => call('triangulate', undefined),
-  },
-  'extrude-face': {
-    cannot: (m, r) => canExtrudeFace(m, r.face, extrudePlacement(m, r)),
-    apply: (m, r) => extrudeFace(m, r.face, extrudePlacement(m, r)),
-    label: (r) => `extrude f${r.face}`,
-    solution: (m, r) => call('extrude-face', { face: r.face, ...extrudePlacement(m, r) }),
-  },
-  'bevel-vertex': {
-    cannot: (m, r) => canBevelVertex(m, r.vertex, r.amount ?? BEVEL_AMOUNT),
-    apply: (m, r) => bevelVertex(m, r.vertex, { amount: r.amount ?? BEVEL_AMOUNT }),
-    label: (r) => `bevel v${r.vertex}`,
-    solution: (_, r) => call('bevel-vertex', { vertex: r.vertex, amount: r.amount ?? BEVEL_AMOUNT }),
+  'erase-edge': { cannot: (m, r) => canMergeFaces(m, r.edge), apply: (m, r) => mergeFaces(m, r.edge), label: (r) => `erase e${r.edge}`, button: { label: 'Erase edge', needs: 'edge' } },
+  'dissolve-edge': {
+    cannot: (m, r) => canDissolveEdge(m, r.edge),
+    apply: (m, r) => dissolveEdge(m, r.edge),
+    label: (r) => `dissolve e${r.edge}`,
+    solution: (_, r) => call('dissolve-edge', r.edge),
+    button: { label: 'Dissolve edge', needs: 'edge' },
   },
   'bevel-edge': {
     cannot: (m, r) => canBevelEdge(m, r.edge, r.amount ?? BEVEL_AMOUNT),
     apply: (m, r) => bevelEdge(m, r.edge, { amount: r.amount ?? BEVEL_AMOUNT }),
     label: (r) => `bevel e${r.edge}`,
     solution: (_, r) => call('bevel-edge', { edge: r.edge, amount: r.amount ?? BEVEL_AMOUNT }),
-  },
-  'dissolve-vertex': {
-    cannot: (m, r) => canDissolveVertex(m, r.vertex),
-    apply: (m, r) => dissolveVertex(m, r.vertex),
-    label: (r) => `dissolve v${r.vertex}`,
-    solution: (_, r) => call('dissolve-vertex', r.vertex),
-  },
-  'dissolve-edge': {
-    cannot: (m, r) => canDissolveEdge(m, r.edge),
-    apply: (m, r) => dissolveEdge(m, r.edge),
-    label: (r) => `dissolve e${r.edge}`,
-    solution: (_, r) => call('dissolve-edge', r.edge),
-  },
-  'collapse-face': {
-    cannot: (m, r) => canCollapseFace(m, r.face),
-    apply: (m, r) => collapseFace(m, r.face),
-    label: (r) => `collapse f${r.face}`,
-    solution: (_, r) => call('collapse-face', r.face),
-  },
-  'make-boundary': {
-    cannot: (m, r) => canMakeBoundary(m, r.face),
-    apply: (m, r) => makeBoundary(m, r.face),
-    label: (r) => `make f${r.face} a hole`,
-    solution: (_, r) => call('make-boundary', r.face),
+    button: { label: 'Bevel edge', needs: 'edge' },
   },
   'weld-edges': {
     cannot: (m, r) => (Array.isArray(r.edges) && r.edges.length === 2 ? canWeldEdges(m, r.edges[0], r.edges[1]) : 'a weld needs two boundary edges: edges: [e1, e2]'),
     apply: (m, r) => weldEdges(m, r.edges[0], r.edges[1]),
     label: (r) => `weld e${r.edges[0]} and e${r.edges[1]}`,
     solution: (_, r) => call('weld-edges', [r.edges[0], r.edges[1]]),
+    button: { label: 'Weld edges', needs: 'two edges' },
+  },
+  'dissolve-vertex': {
+    cannot: (m, r) => canDissolveVertex(m, r.vertex),
+    apply: (m, r) => dissolveVertex(m, r.vertex),
+    label: (r) => `dissolve v${r.vertex}`,
+    solution: (_, r) => call('dissolve-vertex', r.vertex),
+    button: { label: 'Dissolve vertex', needs: 'vertex' },
+  },
+  'bevel-vertex': {
+    cannot: (m, r) => canBevelVertex(m, r.vertex, r.amount ?? BEVEL_AMOUNT),
+    apply: (m, r) => bevelVertex(m, r.vertex, { amount: r.amount ?? BEVEL_AMOUNT }),
+    label: (r) => `bevel v${r.vertex}`,
+    solution: (_, r) => call('bevel-vertex', { vertex: r.vertex, amount: r.amount ?? BEVEL_AMOUNT }),
+    button: { label: 'Bevel vertex', needs: 'vertex' },
+  },
+  'poke-face': { cannot: (m, r) => canPokeFace(m, r.face), apply: (m, r) => pokeFace(m, r.face), label: (r) => `poke f${r.face}`, solution: (_, r) => call('inset-vertex', r.face), button: { label: 'Poke face', needs: 'face' } },
+  'extrude-face': {
+    cannot: (m, r) => canExtrudeFace(m, r.face, extrudePlacement(m, r)),
+    apply: (m, r) => extrudeFace(m, r.face, extrudePlacement(m, r)),
+    label: (r) => `extrude f${r.face}`,
+    solution: (m, r) => call('extrude-face', { face: r.face, ...extrudePlacement(m, r) }),
+    button: { label: 'Extrude face', needs: 'face' },
+  },
+  'collapse-face': {
+    cannot: (m, r) => canCollapseFace(m, r.face),
+    apply: (m, r) => collapseFace(m, r.face),
+    label: (r) => `collapse f${r.face}`,
+    solution: (_, r) => call('collapse-face', r.face),
+    button: { label: 'Collapse face', needs: 'face' },
+  },
+  'make-boundary': {
+    cannot: (m, r) => canMakeBoundary(m, r.face),
+    apply: (m, r) => makeBoundary(m, r.face),
+    label: (r) => `make f${r.face} a hole`,
+    solution: (_, r) => call('make-boundary', r.face),
+    button: { label: 'Make a hole', needs: 'face' },
+  },
+  'triangulate-face': { cannot: (m, r) => canTriangulateFace(m, r.face), apply: (m, r) => triangulateFace(m, r.face), label: (r) => `triangulate f${r.face}`, button: { label: 'Triangulate face', needs: 'face' } },
+  'split-face': {
+    cannot: (m, r) => canSplitFace(m, r.face, r.from, r.to),
+    apply: (m, r) => splitFace(m, r.face, r.from, r.to),
+    label: (r) => `split f${r.face} from v${r.from} to v${r.to}`,
+  },
+  'triangulate-mesh': {
+    cannot: (m) => (m.nFaces === 0 ? 'there are no faces to triangulate' : null),
+    apply: (m) => triangulateMesh(m),
+    label: () => 'triangulate every face',
+    solution: () => call('triangulate', undefined),
+    button: { label: 'Triangulate all', needs: 'mesh' },
   },
 };
+
+/** The edits the Operate panel has a button for, in the table's order (by what they act on): kind, label, what the selection must be. */
+export const editButtons = Object.entries(editDefinitions).flatMap(([kind, definition]) =>
+  definition.button ? [{ kind: kind as Exclude<EditKind, 'split-face'>, ...(definition.button as { label: string; needs: EditNeeds }) }] : [],
+);
 
 function call(exercise: string, input: ExerciseInput | undefined): Omit<SolutionCall, 'label'> {
   return { exercise, input };

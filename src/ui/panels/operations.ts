@@ -6,7 +6,7 @@
  */
 import type { HalfedgeMesh, SubdivisionScheme } from '../../core/index.js';
 import type { CheckedOperation } from '../../workers/protocol.js';
-import { cannotEdit, cannotStart, type EditKind, type EditRequest, type OperationRequest } from '../../workers/operations.js';
+import { cannotEdit, cannotStart, editButtons, type EditRequest, type OperationRequest } from '../../workers/operations.js';
 import { el, replace } from '../dom.js';
 import type { Selection } from '../selection.js';
 
@@ -29,24 +29,6 @@ const schemes: Array<{ scheme: SubdivisionScheme; label: string }> = [
   { scheme: 'linear', label: 'Linear' },
 ];
 
-/** The edits of the selection, by what they act on; a weld takes two edges, chosen one after the other. */
-const edits: Array<{ kind: Exclude<EditKind, 'split-face'>; label: string; needs: 'edge' | 'vertex' | 'face' | 'mesh' | 'two edges' }> = [
-  { kind: 'flip-edge', label: 'Flip edge', needs: 'edge' },
-  { kind: 'split-edge', label: 'Split edge', needs: 'edge' },
-  { kind: 'collapse-edge', label: 'Collapse edge', needs: 'edge' },
-  { kind: 'erase-edge', label: 'Erase edge', needs: 'edge' },
-  { kind: 'dissolve-edge', label: 'Dissolve edge', needs: 'edge' },
-  { kind: 'bevel-edge', label: 'Bevel edge', needs: 'edge' },
-  { kind: 'weld-edges', label: 'Weld edges', needs: 'two edges' },
-  { kind: 'dissolve-vertex', label: 'Dissolve vertex', needs: 'vertex' },
-  { kind: 'bevel-vertex', label: 'Bevel vertex', needs: 'vertex' },
-  { kind: 'poke-face', label: 'Poke face', needs: 'face' },
-  { kind: 'extrude-face', label: 'Extrude face', needs: 'face' },
-  { kind: 'collapse-face', label: 'Collapse face', needs: 'face' },
-  { kind: 'make-boundary', label: 'Make a hole', needs: 'face' },
-  { kind: 'triangulate-face', label: 'Triangulate face', needs: 'face' },
-  { kind: 'triangulate-mesh', label: 'Triangulate all', needs: 'mesh' },
-];
 
 /** The vertex a selection names (a vertex, or the origin of a halfedge), or -1. */
 function selectedVertex(mesh: HalfedgeMesh, s: Selection | null): number {
@@ -126,7 +108,7 @@ export class OperationsPanel {
     this.schemeButtons = schemes.map(({ scheme, label }) =>
       el('button', { type: 'button', 'data-operation': scheme, onclick: whenAvailable(() => actions.start({ kind: 'subdivide', scheme })) }, label),
     );
-    this.editButtons = edits.map(({ kind, label }) =>
+    this.editButtons = editButtons.map(({ kind, label }) =>
       el('button', { type: 'button', 'data-edit': kind, onclick: whenAvailable(() => this.runEdit(kind)) }, label),
     );
     this.gizmoButton = el('button', { type: 'button', 'aria-pressed': 'false', onclick: () => this.toggleGizmo() }, 'Show plane');
@@ -196,7 +178,7 @@ export class OperationsPanel {
     schemes.forEach(({ scheme, label }, i) => setAvailability(this.schemeButtons[i], `Start ${label} subdivision`, unavailable[scheme]));
     setAvailability(this.cutButton, 'Start the plane cut', cannotStart(mesh, this.cutRequest()));
     this.updateChecked();
-    edits.forEach(({ kind, label }, i) =>
+    editButtons.forEach(({ kind, label }, i) =>
       setAvailability(this.editButtons[i], kind === 'weld-edges' && this.weldFirst !== null ? `Weld e${this.weldFirst} to the selected edge` : label, this.reasonAgainst(kind)),
     );
     this.updateSplitFace();
@@ -251,9 +233,9 @@ export class OperationsPanel {
     return { kind: 'cut', plane: this.planeValues(), keep: this.keep.value as 'both' | 'above' | 'below', cap: this.cap.checked };
   }
 
-  private request(kind: (typeof edits)[number]['kind']): EditRequest | string {
+  private request(kind: (typeof editButtons)[number]['kind']): EditRequest | string {
     const mesh = this.mesh!;
-    const need = edits.find((e) => e.kind === kind)!.needs;
+    const need = editButtons.find((e) => e.kind === kind)!.needs;
     if (need === 'mesh') return { kind: 'triangulate-mesh' };
     if (need === 'edge' || need === 'two edges') {
       const edge = selectedEdge(this.selection);
@@ -269,14 +251,14 @@ export class OperationsPanel {
     return face < 0 ? 'select a face or a halfedge inside one first' : ({ kind, face } as EditRequest);
   }
 
-  private reasonAgainst(kind: (typeof edits)[number]['kind']): string | null {
+  private reasonAgainst(kind: (typeof editButtons)[number]['kind']): string | null {
     const request = this.request(kind);
     if (typeof request === 'string') return request;
     // the first edge of a weld only has to be on the boundary: the second decides the rest
     return request.kind === 'weld-edges' && this.weldFirst === null ? null : cannotEdit(this.mesh!, request);
   }
 
-  private runEdit(kind: (typeof edits)[number]['kind']): void {
+  private runEdit(kind: (typeof editButtons)[number]['kind']): void {
     const request = this.request(kind);
     if (typeof request === 'string') return;
     if (request.kind === 'weld-edges' && this.weldFirst === null) {
