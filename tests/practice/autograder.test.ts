@@ -4,7 +4,7 @@
  * does into ROOT/source, and `run_autograder` grades submissions in ROOT/submission with plain
  * Node, the bundled grader alone (no repository, no node_modules beside it).
  */
-import { execFile, execFileSync } from 'node:child_process';
+import { execFileSync } from 'node:child_process';
 import { chmodSync, copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join } from 'node:path';
@@ -14,23 +14,10 @@ import { checkNames, findExercise } from '../../src/core/practice/index.js';
 import { loadCourse, parseCourse } from '../../src/cli/course.js';
 import { sharePoints } from '../../src/cli/grader.js';
 import { crc32, writeZip } from '../../src/cli/zip.js';
+import { type CliRun, runCli } from '../cli.js';
 
 const repo = join(import.meta.dirname, '../..');
 const solutions = join(repo, 'tests/practice/solutions');
-
-interface Run {
-  status: number;
-  stdout: string;
-  stderr: string;
-}
-
-function cli(...args: string[]): Promise<Run> {
-  return new Promise((resolve) => {
-    execFile('npx', ['tsx', 'src/cli/main.ts', ...args], { cwd: repo, timeout: 60_000 }, (error, stdout, stderr) => {
-      resolve({ status: error ? ((error as { code?: number }).code ?? -1) : 0, stdout, stderr });
-    });
-  });
-}
 
 interface ZipFile {
   name: string;
@@ -99,13 +86,13 @@ describe('autograder: a course in a box', () => {
   let folder = '';
   let root = '';
   let files: ZipFile[] = [];
-  let made: Run;
+  let made: CliRun;
   let mixed: Results;
   let correct: Results;
 
   beforeAll(async () => {
     folder = mkdtempSync(join(tmpdir(), 'halfedge-autograder-'));
-    made = await cli('autograder', 'docs/examples/course/COURSE.json', '--out', join(folder, 'autograder.zip'));
+    made = await runCli('autograder', 'docs/examples/course/COURSE.json', '--out', join(folder, 'autograder.zip'));
     expect(made.stderr).toBe('');
     files = readZip(readFileSync(join(folder, 'autograder.zip')));
     // unpacked as Gradescope does, into ROOT/source, with the modes the zip gives
@@ -281,7 +268,7 @@ describe('autograder: the course file', () => {
     try {
       const course = join(folder, 'COURSE.json');
       writeFileSync(course, JSON.stringify({ exercises: [{ id: 'flip-edge', file: 'a.js', points: 2 }, { id: 'split-edge', file: 'b.js', points: 1 }, { id: 'inset-vertex', file: 'c.js', points: 0 }] }));
-      const run = await cli('autograder', course, '--out', join(folder, 'a.zip'));
+      const run = await runCli('autograder', course, '--out', join(folder, 'a.zip'));
       expect(run.status).toBe(2);
       expect(run.stderr).toBe(`halfedge-lab: ${course}: exercises[2].points: must be a positive number\n`);
       expect(run.stdout).toBe('');

@@ -2,24 +2,10 @@
  * The `grade` command end to end, as an instructor runs it: a child process, whose solutions run in
  * a locked-down worker thread with a memory limit. Each case is a real process (about a second).
  */
-import { execFile } from 'node:child_process';
 import { describe, expect, it } from 'vitest';
+import { runCli } from '../cli.js';
 
-interface Result {
-  status: number;
-  stdout: string;
-  stderr: string;
-  ms: number;
-}
-
-function grade(...args: string[]): Promise<Result> {
-  const started = Date.now();
-  return new Promise((resolve) => {
-    execFile('npx', ['tsx', 'src/cli/main.ts', 'grade', ...args], { timeout: 60_000 }, (error, stdout, stderr) => {
-      resolve({ status: error ? ((error as { code?: number }).code ?? -1) : 0, stdout, stderr, ms: Date.now() - started });
-    });
-  });
-}
+const grade = (...args: string[]) => runCli('grade', ...args);
 
 const wrong = (name: string) => `tests/practice/solutions/wrong/${name}.js`;
 
