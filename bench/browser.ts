@@ -10,10 +10,13 @@
  *   - the longest gap between animation frames while a 121k-triangle file opens (from choosing it
  *     until a second after it is drawn), beside the median frame while the view turns around it;
  *   - on the 1.31M-triangle icosphere: opening it, then flip, split, collapse, undo, redo and one
- *     smoothing step, each from the call to the drawn result and as a share of the open; then
- *     every phase of one Loop and one Catmull-Clark level, each with whether its pointer diff is shown.
+ *     smoothing step, each from the call to the drawn result and as a share of the open; then one
+ *     Loop and one Catmull-Clark level stepped phase by phase (each phase with its pointer diff)
+ *     beside the same level run in one go, in the same run: the stepped level and each phase as a
+ *     ratio of the one-run level, and the longest main-thread task of each.
  *
  * Prints one JSON object per line with --json (`case`, `size`, `ms`, plus the case's own fields).
+ * `--only levels` opens the icosphere and measures the levels alone.
  */
 import { execFileSync, spawn } from 'node:child_process';
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -26,6 +29,7 @@ import { sphereWithFaces } from './cases/sphere.js';
 import { icosphere } from './cases/icosphere.js';
 
 const json = process.argv.includes('--json');
+const onlyLevels = process.argv.includes('levels') && process.argv.includes('--only');
 const root = join(import.meta.dirname, '..');
 const port = 5199;
 const results: Array<Record<string, unknown>> = [];
@@ -71,9 +75,11 @@ try {
   report({ case: 'bundle-js-gzip', size: loadedFirst.length, ms: null, kB: gzipped(loadedFirst), limitKB: 300 });
   report({ case: 'practice-js-gzip', size: practice.length, ms: null, kB: gzipped(practice) });
   report({ case: 'gltf-js-gzip', size: gltf.length, ms: null, kB: gzipped(gltf) });
-  report({ case: 'first-load-to-sample-drawn', size: 0, ms: Math.round(firstLoad), limitMs: 1500 });
-  await measureElement();
-  await measureFrameGaps(page, 121_000);
+  if (!onlyLevels) {
+    report({ case: 'first-load-to-sample-drawn', size: 0, ms: Math.round(firstLoad), limitMs: 1500 });
+    await measureElement();
+    await measureFrameGaps(page, 121_000);
+  }
 
   await page.evaluate(() => {
     const w = window as unknown as { longTasks: Array<{ start: number; duration: number }> };
@@ -83,6 +89,16 @@ try {
     }).observe({ type: 'longtask', buffered: false });
   });
 
+  if (!onlyLevels) await measureOpenAndLoop(page);
+  await measureIcosphere(page);
+} finally {
+  await browser.close();
+  server.kill();
+  rmSync(folder, { recursive: true, force: true });
+}
+
+/** Opening a 1M-triangle file, and one Loop step on 250k triangles. */
+async function measureOpenAndLoop(page: import('@playwright/test').Page): Promise<void> {
   // opening a 1M-triangle binary PLY
   const big = join(folder, 'sphere-1m.ply');
   writeFileSync(big, writeSoup(sphereWithFaces(1_000_000), 'ply-binary'));
@@ -101,7 +117,10 @@ try {
   await measure(page, 'loop-step-250k-to-drawn', 250_000, async () => {
     await page.evaluate(() => void window.halfedgeLab.runToEnd());
   });
+}
 
+/** On the 1.31M-triangle icosphere: opening it, the local edits (unless only the levels are asked for), the levels. */
+async function measureIcosphere(page: import('@playwright/test').Page): Promise<void> {
   // local edits on the 1.31M-triangle icosphere, beside the time to open and draw it (the
   // machine's speed drifts: the ratios are the figures to read)
   const ico = join(folder, 'icosphere-1310k.ply');
@@ -126,6 +145,10 @@ try {
   const refusedIsAnError = (name: string, act: () => Promise<unknown>) => async () => {
     if ((await act()) === null) throw new Error(`${name} was refused on the icosphere: ${await page.evaluate(() => window.halfedgeLab.state().message)}`);
   };
+  if (!onlyLevels) await measureEdits();
+  await measureLevels();
+
+  async function measureEdits(): Promise<void> {
   for (const [name, act, share] of edits(0)) {
     await settle(page);
     const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, refusedIsAnError(name, act), 50);
@@ -140,21 +163,47 @@ try {
   versus('smoothing-step', smoothStep.ms, 0.15);
   await page.evaluate(() => window.halfedgeLab.cancel());
 
-  // every phase of one Loop and one Catmull-Clark level on the icosphere, each with its pointer diff
-  for (const scheme of ['loop', 'catmull-clark'] as const) {
-    await page.evaluate((scheme) => window.halfedgeLab.start({ kind: 'subdivide', scheme }), scheme);
-    for (let phase = 1; ; phase++) {
-      const timed = await measure(page, `${scheme}-phase-${phase}-icosphere-1310k`, 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()));
-      const state = await page.evaluate(() => window.halfedgeLab.state());
-      report({ case: `${scheme}-phase-${phase}-diff`, size: 1_310_720, ms: timed.ms, phase: state.phase?.name ?? null, diffShown: state.phase?.diff !== null, diffTotal: state.phase?.diff?.total ?? null });
-      if (!state.stepping) break;
-    }
-    await page.evaluate(() => window.halfedgeLab.undo());
   }
-} finally {
-  await browser.close();
-  server.kill();
-  rmSync(folder, { recursive: true, force: true });
+
+  /**
+   * One level of Loop and of Catmull-Clark, stepped phase by phase and then run in one go from
+   * the same mesh, each from a view at rest (the full checks of the phase before done): the stepped level (the sum of its phases, each from
+   * the press of Step to its drawing) as a ratio of the one-run level (from Run to end to the
+   * drawn result; both started first), and each phase's too; every phase with its pointer diff.
+   */
+  async function measureLevels(): Promise<void> {
+    // at rest: the full counts and checks of the last change done (they follow a phase, in the
+    // worker, which a step asked for meanwhile would wait behind), and the frame after them
+    const atRest = async () => {
+      await page.waitForFunction(() => !window.halfedgeLab.state().pending, null, { timeout: 300_000 });
+      await settle(page);
+    };
+    for (const scheme of ['loop', 'catmull-clark'] as const) {
+      const start = () => page.evaluate((scheme) => window.halfedgeLab.start({ kind: 'subdivide', scheme }), scheme);
+      await settle(page);
+      await start();
+      const phases: Array<{ ms: number; longestTaskOverallMs: number }> = [];
+      for (let phase = 1; ; phase++) {
+        await atRest();
+        const timed = await measure(page, `${scheme}-phase-${phase}-icosphere-1310k`, 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()));
+        phases.push(timed);
+        const state = await page.evaluate(() => window.halfedgeLab.state());
+        report({ case: `${scheme}-phase-${phase}-diff`, size: 1_310_720, ms: timed.ms, phase: state.phase?.name ?? null, diffShown: state.phase?.diff !== null, diffTotal: state.phase?.diff?.total ?? null, patched: state.patched });
+        if (!state.stepping) break;
+      }
+      await page.evaluate(() => window.halfedgeLab.undo());
+      await start();
+      await atRest();
+      const oneRun = await measure(page, `${scheme}-level-one-run-icosphere-1310k`, 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.runToEnd()));
+      await page.evaluate(() => window.halfedgeLab.undo());
+      const stepped = phases.reduce((sum, phase) => sum + phase.ms, 0);
+      const longest = Math.max(...phases.map((phase) => phase.longestTaskOverallMs));
+      report({ case: `${scheme}-level-stepped-vs-one-run`, size: 1_310_720, ms: stepped, peer: 'the same level in one run', peerMs: oneRun.ms, ratio: +(stepped / oneRun.ms).toFixed(3), limitRatio: 1.5, longestTaskMs: longest, limitLongestTaskMs: 100 });
+      phases.forEach((phase, i) =>
+        report({ case: `${scheme}-phase-${i + 1}-vs-one-run`, size: 1_310_720, ms: phase.ms, peer: 'the same level in one run', peerMs: oneRun.ms, ratio: +(phase.ms / oneRun.ms).toFixed(3), limitRatio: 1 }),
+      );
+    }
+  }
 }
 
 /**

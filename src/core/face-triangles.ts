@@ -1,15 +1,93 @@
 /**
  * Triangles of a face, for drawing it and for writing formats that hold only triangles: `degree − 2`
- * of them. A triangle passes through; convex polygons become fans; non-convex ones are ear-clipped
- * in their own plane, so an L-shaped face draws as an L. The mesh itself is not changed.
+ * of them. A triangle passes through; a quad splits along the diagonal inside it; other convex
+ * polygons become fans; non-convex ones are ear-clipped in their own plane, so an L-shaped face
+ * draws as an L. The mesh itself is not changed. One function (`writeFaceTriangles`) decides for
+ * the drawing, its patches and the files alike.
  */
-import { planeBasis, triangulatePolygon } from './edits/triangulate.js';
+import earcut from 'earcut';
+import { planeBasis } from './edits/triangulate.js';
 import { faceVectorArea } from './geometry.js';
 import type { HalfedgeMesh } from './mesh.js';
 
+/** A face's loop of vertices, kept between calls of `writeFaceTriangles` (grown when a face needs more). */
+let scratch = new Int32Array(64);
+const scratchNormal = [0, 0, 0];
+
+/**
+ * Writes the triangles of face `f` as corner vertex ids into `out` from triangle `at` on and
+ * returns how many: what `faceTriangles` gives, without a list per face for a convex one (a
+ * million faces laid out for drawing).
+ */
+export function writeFaceTriangles(mesh: HalfedgeMesh, f: number, out: Uint32Array, at: number): number {
+  const { heNext, heVertex, fHalfedge } = mesh;
+  const start = fHalfedge[f];
+  let n = 0;
+  let h = start;
+  do {
+    if (n === scratch.length) {
+      const larger = new Int32Array(2 * n);
+      larger.set(scratch);
+      scratch = larger;
+    }
+    scratch[n++] = heVertex[h];
+    h = heNext[h];
+  } while (h !== start && n <= mesh.halfedgeSlots);
+  if (n === 4) return writeQuad(mesh.positions, out, at);
+  if (n === 3 || isConvex(mesh.positions, scratch, n, faceVectorArea(mesh, f, scratchNormal))) {
+    for (let i = 1; i + 1 < n; i++) {
+      const o = 3 * (at + i - 1);
+      out[o] = scratch[0];
+      out[o + 1] = scratch[i];
+      out[o + 2] = scratch[i + 1];
+    }
+    return n - 2;
+  }
+  const loop = Array.from(scratch.subarray(0, n));
+  const corners = earClip(mesh.positions, loop, scratchNormal);
+  for (let k = 0; k < corners.length; k++) out[3 * at + k] = loop[corners[k]];
+  return corners.length / 3;
+}
+
+/**
+ * The two triangles of the quad in `scratch`: split along the diagonal 0–2 when the two halves
+ * face the same way (a convex quad, or one bent along that diagonal), else along 1–3 (the
+ * diagonal inside a quad with a reflex corner). What ear clipping gives, without the plane.
+ */
+function writeQuad(p: Float64Array, out: Uint32Array, at: number): number {
+  const [a, b, c, d] = [3 * scratch[0], 3 * scratch[1], 3 * scratch[2], 3 * scratch[3]];
+  const normal = (i: number, j: number, k: number, into: number[]) => {
+    const ux = p[j] - p[i];
+    const uy = p[j + 1] - p[i + 1];
+    const uz = p[j + 2] - p[i + 2];
+    const vx = p[k] - p[i];
+    const vy = p[k + 1] - p[i + 1];
+    const vz = p[k + 2] - p[i + 2];
+    into[0] = uy * vz - uz * vy;
+    into[1] = uz * vx - ux * vz;
+    into[2] = ux * vy - uy * vx;
+    return into;
+  };
+  const [m, n] = [normal(a, b, c, quadNormals[0]), normal(a, c, d, quadNormals[1])];
+  const first = m[0] * n[0] + m[1] * n[1] + m[2] * n[2] >= 0 ? 0 : 1;
+  const o = 3 * at;
+  for (let t = 0; t < 2; t++) {
+    out[o + 3 * t] = scratch[first];
+    out[o + 3 * t + 1] = scratch[(first + 1 + t) % 4];
+    out[o + 3 * t + 2] = scratch[(first + 2 + t) % 4];
+  }
+  return 2;
+}
+
+const quadNormals = [
+  [0, 0, 0],
+  [0, 0, 0],
+];
+
 export function faceTriangles(mesh: HalfedgeMesh, f: number): Uint32Array {
-  const loop = faceLoop(mesh, f);
-  return Uint32Array.from(faceCornerTriangles(mesh, f, loop), (i) => loop[i]);
+  const out = new Uint32Array(3 * Math.max(0, mesh.faceDegree(f) - 2));
+  writeFaceTriangles(mesh, f, out, 0);
+  return out;
 }
 
 /**
@@ -17,12 +95,9 @@ export function faceTriangles(mesh: HalfedgeMesh, f: number): Uint32Array {
  * `fHalfedge[f]`, 1 that of the next halfedge, …), for a writer that keeps values per corner.
  */
 export function faceCornerTriangles(mesh: HalfedgeMesh, f: number, loop = faceLoop(mesh, f)): number[] {
-  const normal = [0, 0, 0];
-  const corners = loop.map((_, i) => i);
-  if (loop.length === 3 || isConvex(mesh.positions, loop, faceVectorArea(mesh, f, normal))) return fan(corners);
-  return earClip(mesh.positions, loop, normal);
+  // a valid face passes through each of its vertices once: a vertex names its corner
+  return Array.from(faceTriangles(mesh, f), (vertex) => loop.indexOf(vertex));
 }
-
 /** The face's vertices from its `fHalfedge` along `next` (a bounded walk). */
 function faceLoop(mesh: HalfedgeMesh, f: number): number[] {
   const { heNext, heVertex, fHalfedge } = mesh;
@@ -36,15 +111,22 @@ function faceLoop(mesh: HalfedgeMesh, f: number): number[] {
   return loop;
 }
 
+/** The square of the sine of the largest turn backwards that counts as going straight on. */
+const STRAIGHT = 1e-20;
+
 function fan(loop: number[]): number[] {
   const corners: number[] = [];
   for (let i = 1; i + 1 < loop.length; i++) corners.push(loop[0], loop[i], loop[i + 1]);
   return corners;
 }
 
-/** Every corner turns the same way as the face's normal. */
-function isConvex(p: Float64Array, loop: number[], normal: number[]): boolean {
-  const n = loop.length;
+/**
+ * Every corner turns the same way as the face's normal, or goes straight on: a corner on a
+ * straight side (a triangle whose sides a subdivision step has split is a hexagon of three such
+ * corners) turns by nothing but rounding, and must not send the face to ear clipping.
+ */
+function isConvex(p: Float64Array, loop: ArrayLike<number>, n: number, normal: number[]): boolean {
+  const normalSquared = normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2];
   for (let i = 0; i < n; i++) {
     const a = 3 * loop[i];
     const b = 3 * loop[(i + 1) % n];
@@ -56,12 +138,19 @@ function isConvex(p: Float64Array, loop: number[], normal: number[]): boolean {
     const vy = p[c + 1] - p[b + 1];
     const vz = p[c + 2] - p[b + 2];
     const turn = (uy * vz - uz * vy) * normal[0] + (uz * vx - ux * vz) * normal[1] + (ux * vy - uy * vx) * normal[2];
-    if (turn < 0) return false;
+    // a turn backwards by more than rounding: |turn| against |u| |v| |normal|, squared
+    if (turn < 0 && turn * turn > STRAIGHT * (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz) * normalSquared) return false;
   }
   return true;
 }
 
-/** Ear clipping in the face's best-fit plane (a face whose outline crosses itself gets a fan); positions in the loop. */
+/**
+ * Ear clipping in the face's best-fit plane (earcut; a face whose outline crosses itself gets a
+ * fan); positions in the loop, wound as the face is. A face is a simple ring without holes, so
+ * the general polygon triangulation of the edits (`triangulatePolygon`, which sorts out repeated
+ * points and rings) would cost several times as much for the same triangles: a subdivision step
+ * shows a million such faces.
+ */
 function earClip(p: Float64Array, loop: number[], normal: number[]): number[] {
   const [u, w] = planeBasis(normal[0], normal[1], normal[2]);
   const flat = new Float64Array(2 * loop.length);
@@ -72,6 +161,16 @@ function earClip(p: Float64Array, loop: number[], normal: number[]): number[] {
     flat[2 * i] = x * u[0] + y * u[1] + z * u[2];
     flat[2 * i + 1] = x * w[0] + y * w[1] + z * w[2];
   });
-  const corners = triangulatePolygon(flat, []);
-  return corners ? Array.from(corners) : fan(loop.map((_, i) => i));
+  const corners = earcut(flat, null, 2);
+  if (corners.length !== 3 * (loop.length - 2)) return fan(loop.map((_, i) => i));
+  // earcut winds its triangles its own way: turn them to the outline's
+  let outline = 0;
+  for (let i = 0, j = loop.length - 1; i < loop.length; j = i++) outline += flat[2 * j] * flat[2 * i + 1] - flat[2 * i] * flat[2 * j + 1];
+  let triangles = 0;
+  for (let t = 0; t < corners.length; t += 3) {
+    const [a, b, c] = [corners[t], corners[t + 1], corners[t + 2]];
+    triangles += (flat[2 * b] - flat[2 * a]) * (flat[2 * c + 1] - flat[2 * a + 1]) - (flat[2 * c] - flat[2 * a]) * (flat[2 * b + 1] - flat[2 * a + 1]);
+  }
+  if (outline * triangles < 0) for (let t = 0; t < corners.length; t += 3) [corners[t + 1], corners[t + 2]] = [corners[t + 2], corners[t + 1]];
+  return corners;
 }

@@ -51,7 +51,6 @@ export class PageCopy {
       if (!this.held || this.held.version !== patch.from) throw new Error(`a patch of snapshot ${patch.from}, but the page holds ${this.held?.version}`);
       applyChange(this.held.mesh, patch.change, 'forward');
       if (changesLiveIds(patch.change)) this.idsVersion++;
-      if (patch.render.grow) this.held.render = grown(this.held.render, patch.render.grow);
       for (const { buffer, offset, data } of patch.render.writes) (this.held.render[buffer] as Float32Array).set(data as Float32Array, offset);
       this.held.render.counts = patch.render.counts;
       this.held.version = snapshot.version;
@@ -64,22 +63,3 @@ export class PageCopy {
   }
 }
 
-/**
- * The buffers with room for `room`, holding what they held: new arrays, so the view draws from
- * them afresh (its old ones are the size they were on the GPU).
- */
-function grown(render: RenderBuffers, room: NonNullable<RenderPatch['grow']>): RenderBuffers {
-  const larger = <T extends Float32Array | Uint32Array | Int32Array>(array: T, length: number): T => {
-    const copy = new (array.constructor as new (n: number) => T)(Math.max(length, array.length));
-    copy.set(array);
-    return copy;
-  };
-  return {
-    ...render,
-    positions: larger(render.positions, 3 * room.vertices),
-    vertices: larger(render.vertices, room.vertices),
-    edges: larger(render.edges, 2 * room.edges),
-    triangles: larger(render.triangles, 3 * room.triangles),
-    triangleFace: larger(render.triangleFace, room.triangles).fill(-1, render.triangleFace.length),
-  };
-}

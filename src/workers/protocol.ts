@@ -128,8 +128,6 @@ export interface RenderPatch {
   picking: RenderWrite[] | null;
   /** The bounds again, when the patch writes more than REBOUND_ABOVE positions; else null. */
   bounds: BoundingSphere | null;
-  /** The room the page's buffers must have before the writes land (they grow, keeping what they hold); null: they have it. */
-  grow: { vertices: number; edges: number; triangles: number } | null;
 }
 
 /**
@@ -182,10 +180,12 @@ export interface Snapshot {
   render: RenderBuffers | null;
   patch: MeshPatch | null;
   /**
-   * Counts, checks and the operations that apply. `pending` after a change small enough to patch:
+   * Counts, checks and the operations that apply. `pending` after a change with a record from the
+   * mesh the page holds (patched, or sent whole when too large to patch: a subdivision phase):
    * then the counts (V, E, F, χ, boundary edges) are exact, `problems` is the check of what the
-   * change touched (on a mesh that had problems before, those problems), and the rest is as the
-   * last full pass found it, until `details()` brings the full pass of this snapshot.
+   * change touched (on a mesh that had problems before, or after a change that rewrote whole
+   * ranges, the last full pass's), and the rest is as the last full pass found it, until
+   * `details()` brings the full pass of this snapshot.
    */
   details: SnapshotDetails & { pending: boolean };
   /** The build report of the file this mesh came from (until the first edit). */

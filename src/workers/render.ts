@@ -13,26 +13,31 @@
  * ```
  *
  * The session keeps one `RenderLayout` for what the page holds: `full()` lays the mesh out
- * afresh, `patch(change)` says what to rewrite. A change too large to patch element by element
- * (a subdivision phase rewires every face), or one that outgrows the buffers, is laid out afresh
- * and sent as whole-range writes, with the room the page's buffers must grow to first: the page
- * keeps its mesh and patches it with the record, instead of taking a new one whole.
+ * afresh, `patch(change)` says what to rewrite, or null when a fresh layout is the better answer:
+ * a change that outgrows the room left, or one that rewrites most of the mesh (a subdivision
+ * phase rewires every face), which the page takes whole: its arrays are transferred, where
+ * patching its own would copy hundreds of megabytes on the page's thread.
  */
 import type { BoundingSphere, ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
-import { changeBytes, forEachPointerWrite } from '../core/index.js';
+import { forEachPointerWrite } from '../core/index.js';
 import { boundingSphere, faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
 import { PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
-import { faceTriangles } from '../core/face-triangles.js';
+import { faceTriangles, writeFaceTriangles } from '../core/face-triangles.js';
 
 /** Spare room in every buffer, so that edits rarely need a fresh layout. */
 const SPARE = 1024;
 
+/** Moved vertices above which a mesh with polygons has every face laid again, in one range, rather than the polygons around each. */
+const EVERY_FACE_ABOVE = 4096;
+
 /**
- * A change whose record holds more bytes than this many per halfedge is laid out afresh: the sets
- * of touched elements would cost more than the pass over everything.
+ * A change that writes more pointers and flags than this share of the mesh's halfedges is laid
+ * out afresh: the sets of touched elements would cost more than a pass over everything, and the
+ * page more to patch its copy than to take a new one. (Moved positions alone do not count: a
+ * smoothing step writes one range of them.)
  */
-const RELAYOUT_BYTES_PER_HALFEDGE = 2;
+const RELAYOUT_SHARE = 1 / 4;
 
 export class RenderLayout {
   private faceStart = new Int32Array(0);
@@ -47,10 +52,10 @@ export class RenderLayout {
   /** Whether the page picks in its worker (decided at the last full layout): patches then carry its copies. */
   private pickingInWorker = false;
 
-  /** Every buffer laid out afresh, with room to grow (at least `least`, the room the page's buffers have). */
-  full(mesh: HalfedgeMesh, least = { vertices: 0, edges: 0, triangles: 0 }): RenderBuffers {
-    const vertexRoom = Math.max(least.vertices, mesh.vertexSlots + SPARE);
-    const edgeRoom = Math.max(least.edges, mesh.edgeSlots + SPARE);
+  /** Every buffer laid out afresh, with room to grow. */
+  full(mesh: HalfedgeMesh): RenderBuffers {
+    const vertexRoom = mesh.vertexSlots + SPARE;
+    const edgeRoom = mesh.edgeSlots + SPARE;
     const positions = new Float32Array(3 * vertexRoom);
     positions.set(mesh.positions.subarray(0, 3 * mesh.vertexSlots));
     const vertices = new Uint32Array(vertexRoom);
@@ -59,26 +64,24 @@ export class RenderLayout {
     const edges = new Uint32Array(2 * edgeRoom);
     for (let e = 0; e < mesh.edgeSlots; e++) writeEdge(mesh, e, edges, 2 * e);
 
-    let count = 0;
-    this.polygons = 0;
-    for (let f = 0; f < mesh.faceSlots; f++) {
-      if (mesh.fDeleted[f]) continue;
-      const degree = mesh.faceDegree(f);
-      count += degree - 2;
-      if (degree > 3) this.polygons++;
-    }
-    const triangleRoom = Math.max(least.triangles, count + 2 * SPARE);
+    // a face of degree d draws d − 2 triangles: the halfedges inside faces, less two per face
+    const { heFace, eDeleted } = mesh;
+    let count = -2 * mesh.nFaces;
+    for (let h = 0; h < mesh.halfedgeSlots; h++) if (heFace[h] !== -1 && !eDeleted[h >> 1]) count++;
+    const triangleRoom = count + 2 * SPARE;
     const triangles = new Uint32Array(3 * triangleRoom);
     const triangleFace = new Int32Array(triangleRoom).fill(-1);
     this.faceStart = new Int32Array(mesh.faceSlots + SPARE);
     this.faceRoom = new Int32Array(mesh.faceSlots + SPARE);
     this.faceCount = new Int32Array(mesh.faceSlots + SPARE);
     this.trianglesUsed = 0;
+    this.polygons = 0;
     for (let f = 0; f < mesh.faceSlots; f++) {
       if (mesh.fDeleted[f]) continue;
       this.faceStart[f] = this.trianglesUsed;
       this.faceCount[f] = this.faceRoom[f] = layFace(mesh, f, this.trianglesUsed, triangles, triangleFace);
       this.trianglesUsed += this.faceCount[f];
+      if (this.faceCount[f] > 1) this.polygons++;
     }
     this.capacity = { vertices: vertexRoom, edges: edgeRoom, triangles: triangleRoom };
     const used = this.counts(mesh);
@@ -98,50 +101,21 @@ export class RenderLayout {
 
   /**
    * The writes that bring the page's buffers from the mesh before `change` to `mesh` (after it),
-   * or null when the page must take the mesh whole (picking moves into or out of its worker).
+   * or null when they do not fit the room left, or the change rewrites most of the mesh (lay the
+   * mesh out afresh with `full`).
    */
   patch(mesh: HalfedgeMesh, change: ChangeRecord): RenderPatch | null {
-    const fits = mesh.vertexSlots <= this.capacity.vertices && mesh.edgeSlots <= this.capacity.edges && mesh.faceSlots <= this.faceStart.length;
-    const large = changeBytes(change) > RELAYOUT_BYTES_PER_HALFEDGE * Math.max(SPARE, mesh.halfedgeSlots);
-    return (fits && !large && this.patchTouched(mesh, change)) || this.relayout(mesh);
-  }
-
-  /**
-   * Every buffer laid out afresh, sent as one write each over what is in use. `grow` says how
-   * large the page's buffers must be first (null: they have room).
-   */
-  private relayout(mesh: HalfedgeMesh): RenderPatch | null {
-    const room = { ...this.capacity };
-    const picking = this.pickingInWorker;
-    const render = this.full(mesh, room);
-    if (this.pickingInWorker !== picking) return null;
-    const { counts } = render;
-    const grown = this.capacity.vertices > room.vertices || this.capacity.edges > room.edges || this.capacity.triangles > room.triangles;
-    const writes: RenderWrite[] = [
-      { buffer: 'positions', offset: 0, data: render.positions.subarray(0, 3 * counts.vertices) },
-      { buffer: 'vertices', offset: 0, data: render.vertices.subarray(0, counts.vertices) },
-      { buffer: 'edges', offset: 0, data: render.edges.subarray(0, 2 * counts.edges) },
-      { buffer: 'triangles', offset: 0, data: render.triangles.subarray(0, 3 * counts.triangles) },
-      { buffer: 'triangleFace', offset: 0, data: render.triangleFace.subarray(0, counts.triangles) },
-    ];
-    const pickingWrites: RenderWrite[] | null = render.picking
-      ? [
-          { buffer: 'positions', offset: 0, data: render.picking.positions.subarray(0, 3 * counts.vertices) },
-          { buffer: 'triangles', offset: 0, data: render.picking.triangles },
-        ]
-      : null;
-    return { writes, counts, picking: pickingWrites, bounds: render.bounds, grow: grown ? { ...this.capacity } : null };
-  }
-
-  /** The writes of the elements `change` touched, or null when they outgrow the room the triangles have. */
-  private patchTouched(mesh: HalfedgeMesh, change: ChangeRecord): RenderPatch | null {
+    if (mesh.vertexSlots > this.capacity.vertices || mesh.edgeSlots > this.capacity.edges || mesh.faceSlots > this.faceStart.length) return null;
+    const written = change.pointers.array.length + change.ranges.reduce((sum, range) => sum + range.new.length, 0);
+    if (written > RELAYOUT_SHARE * Math.max(SPARE, mesh.halfedgeSlots)) return null;
     const touched = touchedBy(mesh, change);
     const writes: RenderWrite[] = [];
     if (this.polygons > 0) {
       // a moved corner can change how a polygon splits into triangles: those polygons are drawn
-      // again; when many corners moved (a smoothing step), every face, in one range
+      // again; when many corners moved (a smoothing step, a subdivision's vertex points), every
+      // face, in one range
       const onlyMoved = change.pointers.array.length === 0 && touched.vertices.size + touched.edges.size + touched.faces.size === 0;
-      if (onlyMoved && movedCount(touched.moved) > mesh.vertexSlots / 4) writes.push(...this.everyFace(mesh));
+      if (onlyMoved && movedCount(touched.moved) > EVERY_FACE_ABOVE) writes.push(...this.everyFace(mesh));
       else forEachMoved(touched.moved, (v) => this.polygonsAround(mesh, v, touched.faces));
     }
     const fallback = liveVertex(mesh);
@@ -164,7 +138,7 @@ export class RenderLayout {
       if (count > this.faceRoom[f]) {
         // the old range is too small: blank it and move the face to the end
         if (this.faceRoom[f] > 0) writes.push(...blank(start, this.faceRoom[f]));
-        if (this.trianglesUsed + count > this.capacity.triangles) return null; // laid out afresh, which resets all this
+        if (this.trianglesUsed + count > this.capacity.triangles) return null;
         start = this.faceStart[f] = this.trianglesUsed;
         this.trianglesUsed += count;
         this.faceRoom[f] = count;
@@ -175,7 +149,7 @@ export class RenderLayout {
       if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
     }
     const picking = this.pickingInWorker ? writes.filter((w) => w.buffer === 'positions' || w.buffer === 'triangles').map((w) => ({ ...w, data: w.data.slice() })) : null;
-    return { writes, counts: this.counts(mesh), picking, bounds: positions.reduce((sum, w) => sum + w.data.length / 3, 0) > REBOUND_ABOVE ? boundsOf(mesh) : null, grow: null };
+    return { writes, counts: this.counts(mesh), picking, bounds: positions.reduce((sum, w) => sum + w.data.length / 3, 0) > REBOUND_ABOVE ? boundsOf(mesh) : null };
   }
 
   /**
@@ -314,9 +288,9 @@ function layFace(mesh: HalfedgeMesh, f: number, t: number, triangles: Uint32Arra
     triangleFace[t] = f;
     return 1;
   }
-  const corners = faceTriangles(mesh, f);
-  writeTriangles(corners, f, t, triangles, triangleFace);
-  return corners.length / 3;
+  const count = writeFaceTriangles(mesh, f, triangles, t);
+  triangleFace.fill(f, t, t + count);
+  return count;
 }
 
 function writeTriangles(corners: Uint32Array, f: number, first: number, triangles: Uint32Array, triangleFace: Int32Array): void {

@@ -334,14 +334,17 @@ export class EditingSession implements SnapshotVerbs<Snapshot | Promise<Snapshot
     const patch = render && this.sent ? { from: this.sent.version, change: kept ? structuredClone(change!) : change!, render } : null;
     this.sent = { version, state: this.state };
     const report = stepping ? null : info.report;
-    this.lastDetails = patch ? patchedDetails(mesh, patch.change, this.lastDetails!, version) : fullDetails(mesh, report, version);
-    this.connectivityChecked = patch ? this.connectivityChecked && onlyChangesValues(patch.change) : true;
+    // a change too large to patch (a subdivision phase) still has its record: the mesh goes whole,
+    // its counts read off the record at once, the full pass after (on request, as after a patch)
+    const counted = canPatch ? change : null;
+    this.lastDetails = counted ? patchedDetails(mesh, counted, this.lastDetails!, version) : fullDetails(mesh, report, version);
+    this.connectivityChecked = counted ? this.connectivityChecked && onlyChangesValues(counted) : true;
     return {
       version,
       mesh: patch ? null : serializeMesh(mesh, EDIT_ROOM),
       render: patch ? null : this.layout.full(mesh),
       patch,
-      details: { ...this.lastDetails, pending: patch !== null },
+      details: { ...this.lastDetails, pending: counted !== null },
       report,
       file: info.file,
       ...(stepping ? shownPhase(stepping) : { phase: info.phase, diff: info.diff }),

@@ -15,6 +15,8 @@ export interface PageSession {
   page: PageCopy;
   /** Every snapshot taken so far, whole (false) or patched (true). */
   patched: boolean[];
+  /** Every snapshot taken so far: whether its counts came from a change record, the full pass after (`pending`). */
+  counted: boolean[];
   snapshot(): PageSnapshot;
   start(...args: Parameters<EditingSession['start']>): PageSnapshot;
   step(): PageSnapshot;
@@ -31,8 +33,10 @@ export interface PageSession {
 export function pageSession(session: EditingSession): PageSession {
   const page = new PageCopy();
   const patched: boolean[] = [];
+  const counted: boolean[] = [];
   const take = (snapshot: Snapshot): PageSnapshot => {
     patched.push(snapshot.patch !== null);
+    counted.push(snapshot.details.pending);
     const shown = page.take(snapshot);
     if (!shown.pending) return shown;
     const { version: _, ...details } = session.details();
@@ -43,6 +47,7 @@ export function pageSession(session: EditingSession): PageSession {
     session,
     page,
     patched,
+    counted,
     snapshot: () => take(session.snapshot()),
     start: (request) => take(session.start(request)),
     step: () => take(session.step()),

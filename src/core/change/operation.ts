@@ -104,7 +104,25 @@ export function phaseElements(change: ChangeRecord, limit = Infinity): PhaseElem
   for (const { array, start, old, new: now } of change.ranges) {
     // slots brought into use are created; what they name is marked through the old slots' own writes
     if (!old) continue;
-    for (let i = 0; i < now.length; i++) if (old[i] !== now[i]) visit(array, start + i, old[i], now[i]);
+    const { owner, refers } = meshArrays[array];
+    if (refers === null) {
+      for (let i = 0; i < now.length; i++) if (old[i] !== now[i]) visit(array, start + i, old[i], now[i]);
+      continue;
+    }
+    // a range may hold millions of fields: the marks of `visit`, in a plain loop
+    const own = marks[owner];
+    const ownSlots = slotCount(before, owner);
+    const named = refers === 'halfedge' ? null : marks[refers];
+    const namedSlots = slotCount(before, refers);
+    for (let i = 0; i < now.length; i++) {
+      const was = old[i];
+      const is = now[i];
+      if (was === is) continue;
+      if (start + i < ownSlots) own[start + i] |= REWIRED;
+      if (named === null) continue;
+      if (was >= 0 && was < namedSlots) named[was] |= REWIRED;
+      if (is >= 0 && is < namedSlots) named[is] |= REWIRED;
+    }
   }
   let movedCount = 0;
   for (const value of change.values) {
@@ -118,26 +136,32 @@ export function phaseElements(change: ChangeRecord, limit = Infinity): PhaseElem
       movedCount++;
     }
   }
-  const ids = (kind: keyof typeof marks, bit: number, unless = 0) => {
-    const found: number[] = [];
+  // each category's first `limit` ids of each kind, in one pass over the kind's marks
+  const categories = [
+    { name: 'created', bit: CREATED, unless: REMOVED, kinds: ['vertex', 'edge', 'face'] },
+    { name: 'moved', bit: MOVED, unless: CREATED | REMOVED, kinds: ['vertex'] },
+    { name: 'rewired', bit: REWIRED, unless: CREATED | REMOVED, kinds: ['vertex', 'halfedge', 'face'] },
+    { name: 'removed', bit: REMOVED, unless: 0, kinds: ['vertex', 'edge', 'face'] },
+  ] as const;
+  const names = { vertex: 'vertices', edge: 'edges', face: 'faces', halfedge: 'halfedges' } as const;
+  const result = { created: {}, moved: {}, rewired: {}, removed: {}, movedCount } as PhaseElements;
+  for (const kind of ['vertex', 'edge', 'face', 'halfedge'] as const) {
+    const wanted = categories.filter((c) => (c.kinds as readonly string[]).includes(kind));
+    const found = wanted.map((): number[] => []);
     const m = marks[kind];
-    for (let id = 0; id < m.length && found.length < limit; id++) if (m[id] & bit && !(m[id] & unless)) found.push(id);
-    return found.length ? Int32Array.from(found) : undefined;
-  };
-  const byKind = (bit: number, unless = 0, kinds: (keyof typeof marks)[] = ['vertex', 'edge', 'face', 'halfedge']): ElementIds => {
-    const names = { vertex: 'vertices', edge: 'edges', face: 'faces', halfedge: 'halfedges' } as const;
-    const result: ElementIds = {};
-    for (const kind of kinds) {
-      const found = ids(kind, bit, unless);
-      if (found) result[names[kind]] = found;
+    for (let id = 0; id < m.length; id++) {
+      const mark = m[id];
+      if (mark === 0) continue;
+      let full = true;
+      for (let c = 0; c < wanted.length; c++) {
+        if (found[c].length < limit && mark & wanted[c].bit && !(mark & wanted[c].unless)) found[c].push(id);
+        full &&= found[c].length >= limit;
+      }
+      if (full) break;
     }
-    return result;
-  };
-  return {
-    created: byKind(CREATED, REMOVED, ['vertex', 'edge', 'face']),
-    moved: byKind(MOVED, CREATED | REMOVED, ['vertex']),
-    rewired: byKind(REWIRED, CREATED | REMOVED, ['vertex', 'halfedge', 'face']),
-    removed: byKind(REMOVED, 0, ['vertex', 'edge', 'face']),
-    movedCount,
-  };
+    wanted.forEach((c, i) => {
+      if (found[i].length) result[c.name][names[kind]] = Int32Array.from(found[i]);
+    });
+  }
+  return result;
 }

@@ -147,10 +147,17 @@ export function pointerDiffOf(record: ChangeRecord, limit = DIFF_LISTED): Pointe
     if (listed[ownerOrder[spec.owner]]++ < limit) candidates.push({ element: spec.owner as PointerChange['element'], id, field: spec.field, before, after });
   };
   for (let i = 0; i < array.length; i++) take(array[i], index[i], old[i], now[i]);
-  for (const range of record.ranges) {
-    listed.fill(0);
-    const initial = meshArrays[range.array].initial;
-    for (let i = 0; i < range.new.length; i++) take(range.array, range.start + i, range.old ? range.old[i] : initial, range.new[i]);
+  // a range may hold millions of fields: counted in a plain loop, the first `limit` taken
+  for (const { array, start, old, new: now } of record.ranges) {
+    const spec = meshArrays[array];
+    if (!spec.field) continue;
+    let listedHere = 0;
+    for (let i = 0; i < now.length; i++) {
+      const before = old ? old[i] : spec.initial;
+      if (before === now[i]) continue;
+      total++;
+      if (listedHere++ < limit) candidates.push({ element: spec.owner as PointerChange['element'], id: start + i, field: spec.field, before, after: now[i] });
+    }
   }
   const order = (change: PointerChange) => ownerOrder[change.element] * 16 + meshArrays.findIndex((spec) => spec.owner === change.element && spec.field === change.field);
   candidates.sort((p, q) => ownerOrder[p.element] - ownerOrder[q.element] || p.id - q.id || order(p) - order(q));

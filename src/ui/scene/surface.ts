@@ -77,18 +77,12 @@ export class SurfaceLayer {
 
   /**
    * Draws new buffers, or, with a patch, uploads again only the ranges it rewrote (the buffers
-   * themselves were patched in place by the session client; a patch that grew them gives new
-   * arrays, uploaded whole, while the picking worker still takes only the patch).
+   * themselves were patched in place by the session client).
    */
   update(render: RenderBuffers, patch: RenderPatch | null = null): void {
     const { counts } = render;
     const triangles = counts.triangles;
-    const sameArrays = this.faces.getAttribute('position')?.array === render.positions;
-    if (patch && !sameArrays) {
-      this.setBuffers(render);
-      this.boundMoved(patch);
-      if (this.workerReady) this.workerReady = this.patchPickingWorker(patch);
-    } else if (patch) {
+    if (patch && this.faces.getAttribute('position')?.array === render.positions) {
       const attributes = {
         positions: this.faces.getAttribute('position') as BufferAttribute,
         triangles: this.faces.getIndex()!,
