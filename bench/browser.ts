@@ -149,20 +149,19 @@ async function measureIcosphere(page: import('@playwright/test').Page): Promise<
   await measureLevels();
 
   async function measureEdits(): Promise<void> {
-  for (const [name, act, share] of edits(0)) {
+    for (const [name, act, share] of edits(0)) {
+      await settle(page);
+      const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, refusedIsAnError(name, act), 50);
+      versus(name, timed.ms, share);
+    }
+    // far from the first series' edges, which its collapse may have taken
+    for (const [name, act] of edits(10_000)) await measure(page, `${name}-icosphere-1310k-back-to-back`, 1_310_720, refusedIsAnError(name, act), 50);
+    // the step from a view at rest too: starting shows the phase card, a frame of its own
+    await page.evaluate(() => window.halfedgeLab.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 3 } }));
     await settle(page);
-    const timed = await measure(page, `${name}-icosphere-1310k`, 1_310_720, refusedIsAnError(name, act), 50);
-    versus(name, timed.ms, share);
-  }
-  // far from the first series' edges, which its collapse may have taken
-  for (const [name, act] of edits(10_000)) await measure(page, `${name}-icosphere-1310k-back-to-back`, 1_310_720, refusedIsAnError(name, act), 50);
-  // the step from a view at rest too: starting shows the phase card, a frame of its own
-  await page.evaluate(() => window.halfedgeLab.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 3 } }));
-  await settle(page);
-  const smoothStep = await measure(page, 'smoothing-step-icosphere-1310k', 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()), 50);
-  versus('smoothing-step', smoothStep.ms, 0.15);
-  await page.evaluate(() => window.halfedgeLab.cancel());
-
+    const smoothStep = await measure(page, 'smoothing-step-icosphere-1310k', 1_310_720, async () => void page.evaluate(() => window.halfedgeLab.step()), 50);
+    versus('smoothing-step', smoothStep.ms, 0.15);
+    await page.evaluate(() => window.halfedgeLab.cancel());
   }
 
   /**
