@@ -55,21 +55,27 @@ export function writeFaceTriangles(mesh: HalfedgeMesh, f: number, out: Uint32Arr
  * diagonal inside a quad with a reflex corner). What ear clipping gives, without the plane.
  */
 function writeQuad(p: Float64Array, out: Uint32Array, at: number): number {
-  const [a, b, c, d] = [3 * scratch[0], 3 * scratch[1], 3 * scratch[2], 3 * scratch[3]];
-  const normal = (i: number, j: number, k: number, into: number[]) => {
-    const ux = p[j] - p[i];
-    const uy = p[j + 1] - p[i + 1];
-    const uz = p[j + 2] - p[i + 2];
-    const vx = p[k] - p[i];
-    const vy = p[k + 1] - p[i + 1];
-    const vz = p[k + 2] - p[i + 2];
-    into[0] = uy * vz - uz * vy;
-    into[1] = uz * vx - ux * vz;
-    into[2] = ux * vy - uy * vx;
-    return into;
-  };
-  const [m, n] = [normal(a, b, c, quadNormals[0]), normal(a, c, d, quadNormals[1])];
-  const first = m[0] * n[0] + m[1] * n[1] + m[2] * n[2] >= 0 ? 0 : 1;
+  const a = 3 * scratch[0];
+  const b = 3 * scratch[1];
+  const c = 3 * scratch[2];
+  const d = 3 * scratch[3];
+  // (b − a) × (c − a) against (c − a) × (d − a): the normals of the halves either side of 0–2
+  const ux = p[b] - p[a];
+  const uy = p[b + 1] - p[a + 1];
+  const uz = p[b + 2] - p[a + 2];
+  const vx = p[c] - p[a];
+  const vy = p[c + 1] - p[a + 1];
+  const vz = p[c + 2] - p[a + 2];
+  const wx = p[d] - p[a];
+  const wy = p[d + 1] - p[a + 1];
+  const wz = p[d + 2] - p[a + 2];
+  const mx = uy * vz - uz * vy;
+  const my = uz * vx - ux * vz;
+  const mz = ux * vy - uy * vx;
+  const nx = vy * wz - vz * wy;
+  const ny = vz * wx - vx * wz;
+  const nz = vx * wy - vy * wx;
+  const first = mx * nx + my * ny + mz * nz >= 0 ? 0 : 1;
   const o = 3 * at;
   for (let t = 0; t < 2; t++) {
     out[o + 3 * t] = scratch[first];
@@ -78,11 +84,6 @@ function writeQuad(p: Float64Array, out: Uint32Array, at: number): number {
   }
   return 2;
 }
-
-const quadNormals = [
-  [0, 0, 0],
-  [0, 0, 0],
-];
 
 export function faceTriangles(mesh: HalfedgeMesh, f: number): Uint32Array {
   const out = new Uint32Array(3 * Math.max(0, mesh.faceDegree(f) - 2));
