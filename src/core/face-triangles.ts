@@ -55,10 +55,25 @@ export function writeFaceTriangles(mesh: HalfedgeMesh, f: number, out: Uint32Arr
  * diagonal inside a quad with a reflex corner). What ear clipping gives, without the plane.
  */
 function writeQuad(p: Float64Array, out: Uint32Array, at: number): number {
-  const a = 3 * scratch[0];
-  const b = 3 * scratch[1];
-  const c = 3 * scratch[2];
-  const d = 3 * scratch[3];
+  const first = quadSplitCorner(p, scratch[0], scratch[1], scratch[2], scratch[3]);
+  const o = 3 * at;
+  for (let t = 0; t < 2; t++) {
+    out[o + 3 * t] = scratch[first];
+    out[o + 3 * t + 1] = scratch[(first + 1 + t) % 4];
+    out[o + 3 * t + 2] = scratch[(first + 2 + t) % 4];
+  }
+  return 2;
+}
+
+/**
+ * The corner a quad's diagonal starts from, 0 (the diagonal 0–2) or 1 (1–3), for the quad of
+ * vertices `v0 … v3` in order, with positions `p` (see `writeQuad`).
+ */
+export function quadSplitCorner(p: ArrayLike<number>, v0: number, v1: number, v2: number, v3: number): 0 | 1 {
+  const a = 3 * v0;
+  const b = 3 * v1;
+  const c = 3 * v2;
+  const d = 3 * v3;
   // (b − a) × (c − a) against (c − a) × (d − a): the normals of the halves either side of 0–2
   const ux = p[b] - p[a];
   const uy = p[b + 1] - p[a + 1];
@@ -75,14 +90,7 @@ function writeQuad(p: Float64Array, out: Uint32Array, at: number): number {
   const nx = vy * wz - vz * wy;
   const ny = vz * wx - vx * wz;
   const nz = vx * wy - vy * wx;
-  const first = mx * nx + my * ny + mz * nz >= 0 ? 0 : 1;
-  const o = 3 * at;
-  for (let t = 0; t < 2; t++) {
-    out[o + 3 * t] = scratch[first];
-    out[o + 3 * t + 1] = scratch[(first + 1 + t) % 4];
-    out[o + 3 * t + 2] = scratch[(first + 2 + t) % 4];
-  }
-  return 2;
+  return mx * nx + my * ny + mz * nz >= 0 ? 0 : 1;
 }
 
 export function faceTriangles(mesh: HalfedgeMesh, f: number): Uint32Array {

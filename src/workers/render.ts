@@ -23,7 +23,7 @@ import { forEachPointerWrite } from '../core/index.js';
 import { boundingSphere, faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
 import { PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
-import { faceTriangles, writeFaceTriangles } from '../core/face-triangles.js';
+import { faceTriangles, quadSplitCorner, writeFaceTriangles } from '../core/face-triangles.js';
 
 /** Spare room in every buffer, so that edits rarely need a fresh layout. */
 const SPARE = 1024;
@@ -115,7 +115,12 @@ export class RenderLayout {
       // again; when many corners moved (a smoothing step, a subdivision's vertex points), every
       // face, in one range
       const onlyMoved = change.pointers.array.length === 0 && touched.vertices.size + touched.edges.size + touched.faces.size === 0;
-      if (onlyMoved && movedCount(touched.moved) > EVERY_FACE_ABOVE) writes.push(...this.everyFace(mesh));
+      if (onlyMoved && movedCount(touched.moved) > EVERY_FACE_ABOVE) {
+        // a mesh of quads (a Catmull-Clark level) redraws only the quads whose diagonal changed
+        const flipped = this.quadsSplitAnew(mesh, touched.moved);
+        if (flipped === null || flipped.length > EVERY_FACE_ABOVE) writes.push(...this.everyFace(mesh));
+        else for (const f of flipped) touched.faces.add(f);
+      }
       else forEachMoved(touched.moved, (v) => this.polygonsAround(mesh, v, touched.faces));
     }
     const fallback = liveVertex(mesh);
@@ -164,6 +169,36 @@ export class RenderLayout {
       { buffer: 'triangles', offset: 0, data: triangles },
       { buffer: 'triangleFace', offset: 0, data: triangleFace },
     ];
+  }
+
+  /**
+   * After only vertices moved: the quads that split along the other diagonal now (see
+   * `quadSplitCorner`), or null when a face has more than four sides (its triangles may change
+   * in more ways: lay every face again). One pass over the faces, where laying them all again
+   * sent every triangle to the page.
+   */
+  private quadsSplitAnew(mesh: HalfedgeMesh, moved: ValueChange[]): number[] | null {
+    const { heNext, heVertex, fHalfedge, fDeleted, positions } = mesh;
+    const old = positions.slice(0, 3 * mesh.vertexSlots);
+    for (const value of moved) {
+      if (!value.old) continue;
+      if (!value.index) old.set(value.old, 3 * value.start);
+      else value.index.forEach((v, i) => old.set(value.old!.subarray(3 * i, 3 * i + 3), 3 * v));
+    }
+    const flipped: number[] = [];
+    for (let f = 0; f < mesh.faceSlots; f++) {
+      if (fDeleted[f] || this.faceCount[f] < 2) continue;
+      if (this.faceCount[f] > 2) return null;
+      const h0 = fHalfedge[f];
+      const h1 = heNext[h0];
+      const h2 = heNext[h1];
+      const a = heVertex[h0];
+      const b = heVertex[h1];
+      const c = heVertex[h2];
+      const d = heVertex[heNext[h2]];
+      if (quadSplitCorner(old, a, b, c, d) !== quadSplitCorner(positions, a, b, c, d)) flipped.push(f);
+    }
+    return flipped;
   }
 
   /** Adds the faces of more than three sides around vertex `v` to `faces`. */

@@ -6,7 +6,7 @@
  * is the record's.
  */
 import { describe, expect, it } from 'vitest';
-import { diffPointers, meshFingerprint, torus, uvSphere, writeSoup } from '../../src/index.js';
+import { diffPointers, meshFingerprint, seededRandom, torus, uvSphere, writeSoup } from '../../src/index.js';
 import { loadFile } from '../../src/workers/load.js';
 import type { OperationRequest } from '../../src/workers/operations.js';
 import { RenderLayout } from '../../src/workers/render.js';
@@ -57,5 +57,24 @@ describe('a stepped phase', () => {
     // a subdivision phase that rewires every face comes whole; a phase that writes less, a patch
     if (request.kind === 'subdivide') expect(patched.some((p) => !p), 'a subdivision phase came whole').toBe(true);
     expect(patched.some(Boolean), 'a phase came as a patch').toBe(true);
+  });
+});
+
+describe('a step that moves thousands of vertices of a quad mesh', () => {
+  it('redraws the quads whose diagonal changed, and draws what a fresh layout draws', async () => {
+    // 5,120 quads crumpled by noise: smoothing them out turns thousands of diagonals the other way
+    const soup = torus(80, 64);
+    const random = seededRandom(20261128);
+    for (let i = 0; i < soup.positions.length; i++) soup.positions[i] += 0.1 * (random() - 0.5);
+    const session = new EditingSession();
+    session.adopt(await loadFile(writeSoup(soup, 'off'), 'torus.off'));
+    const page = pageSession(session);
+    page.start({ kind: 'smooth', options: { method: 'laplacian', iterations: 3 } });
+    for (let step = 1; step <= 3; step++) {
+      const shown = page.step();
+      expect(page.patched.at(-1), `step ${step}`).toBe(true);
+      expect(meshFingerprint(shown.mesh), `step ${step}`).toBe(session.fingerprint());
+      expect(drawn(shown.render), `step ${step}`).toEqual(drawn(new RenderLayout().full(shown.mesh)));
+    }
   });
 });
