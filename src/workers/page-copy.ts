@@ -62,4 +62,3 @@ export class PageCopy {
     return { ...rest, ...full, mesh: this.held.mesh, render: this.held.render, renderPatch: patch?.render ?? null, change: patch?.change ?? null, idsVersion: this.idsVersion };
   }
 }
-

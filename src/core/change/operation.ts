@@ -13,7 +13,7 @@
  */
 
 import type { ChangeRecord } from './record.js';
-import { meshArrays, slotCount } from '../mesh-arrays.js';
+import { type ElementKind, meshArrays, slotCount } from '../mesh-arrays.js';
 
 /** Ids of elements, by kind. */
 export interface ElementIds {
@@ -63,66 +63,53 @@ const REMOVED = 2;
 const REWIRED = 4;
 const MOVED = 8;
 
+type Marks = Record<ElementKind, Uint8Array>;
+
+/**
+ * Marks what one write of a record did, among the elements there before (`slots` of each kind): a
+ * flag deleted or brought back, a pointer's owner rewired, and the vertex or face it named before
+ * and after too.
+ */
+function markWrite(marks: Marks, slots: Record<ElementKind, number>, array: number, id: number, old: number, now: number): void {
+  const { owner, refers } = meshArrays[array];
+  if (refers === null) {
+    if (id >= slots[owner]) return;
+    const bit = now ? REMOVED : CREATED;
+    marks[owner][id] |= bit;
+    // an edge's halfedges go and come back with it
+    if (owner === 'edge') {
+      marks.halfedge[2 * id] |= bit;
+      marks.halfedge[2 * id + 1] |= bit;
+    }
+    return;
+  }
+  if (id < slots[owner]) marks[owner][id] |= REWIRED;
+  if (refers === 'halfedge') return;
+  if (old >= 0 && old < slots[refers]) marks[refers][old] |= REWIRED;
+  if (now >= 0 && now < slots[refers]) marks[refers][now] |= REWIRED;
+}
+
 /**
  * What the phase whose record is `change` created, moved, rewired and removed, read off the record
  * (ids as after it): the first `limit` ids of each, in increasing order.
  */
 export function phaseElements(change: ChangeRecord, limit = Infinity): PhaseElements {
   const { before, after } = change;
-  const marks = {
+  const marks: Marks = {
     vertex: new Uint8Array(Math.max(before.vertexSlots, after.vertexSlots)),
     halfedge: new Uint8Array(2 * Math.max(before.edgeSlots, after.edgeSlots)),
     edge: new Uint8Array(Math.max(before.edgeSlots, after.edgeSlots)),
     face: new Uint8Array(Math.max(before.faceSlots, after.faceSlots)),
   };
   for (const kind of ['vertex', 'edge', 'face'] as const) marks[kind].fill(CREATED, slotCount(before, kind), slotCount(after, kind));
-  const mark = (kind: keyof typeof marks, id: number, bit: number) => {
-    if (id >= 0 && id < slotCount(before, kind)) marks[kind][id] |= bit;
-  };
-  const visit = (array: number, id: number, old: number, now: number) => {
-    const { owner, refers } = meshArrays[array];
-    if (refers === null) {
-      // a flag: deleted (0 → 1) or brought back
-      if (id >= slotCount(before, owner)) return;
-      const bit = now ? REMOVED : CREATED;
-      marks[owner][id] |= bit;
-      // an edge's halfedges go and come back with it
-      if (owner === 'edge') {
-        marks.halfedge[2 * id] |= bit;
-        marks.halfedge[2 * id + 1] |= bit;
-      }
-      return;
-    }
-    mark(owner, id, REWIRED);
-    if (refers !== 'halfedge') {
-      mark(refers, old, REWIRED);
-      mark(refers, now, REWIRED);
-    }
-  };
+  const slots = { vertex: before.vertexSlots, halfedge: 2 * before.edgeSlots, edge: before.edgeSlots, face: before.faceSlots };
   const { array, index, old, new: now } = change.pointers;
-  for (let i = 0; i < array.length; i++) visit(array[i], index[i], old[i], now[i]);
-  for (const { array, start, old, new: now } of change.ranges) {
+  for (let i = 0; i < array.length; i++) markWrite(marks, slots, array[i], index[i], old[i], now[i]);
+  for (const range of change.ranges) {
     // slots brought into use are created; what they name is marked through the old slots' own writes
-    if (!old) continue;
-    const { owner, refers } = meshArrays[array];
-    if (refers === null) {
-      for (let i = 0; i < now.length; i++) if (old[i] !== now[i]) visit(array, start + i, old[i], now[i]);
-      continue;
-    }
-    // a range may hold millions of fields: the marks of `visit`, in a plain loop
-    const own = marks[owner];
-    const ownSlots = slotCount(before, owner);
-    const named = refers === 'halfedge' ? null : marks[refers];
-    const namedSlots = slotCount(before, refers);
-    for (let i = 0; i < now.length; i++) {
-      const was = old[i];
-      const is = now[i];
-      if (was === is) continue;
-      if (start + i < ownSlots) own[start + i] |= REWIRED;
-      if (named === null) continue;
-      if (was >= 0 && was < namedSlots) named[was] |= REWIRED;
-      if (is >= 0 && is < namedSlots) named[is] |= REWIRED;
-    }
+    if (!range.old) continue;
+    // a range may hold millions of fields: a plain loop over them
+    for (let i = 0; i < range.new.length; i++) if (range.old[i] !== range.new[i]) markWrite(marks, slots, range.array, range.start + i, range.old[i], range.new[i]);
   }
   let movedCount = 0;
   for (const value of change.values) {

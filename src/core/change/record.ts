@@ -21,7 +21,7 @@
 import type { AttributeArray } from '../attributes.js';
 import { DIFF_LISTED, type PointerChange, type PointerDiff } from './diff.js';
 import type { HalfedgeMesh, SlotState } from '../mesh.js';
-import { attributeSetOf, type ElementKind, meshArrays, slotCount } from '../mesh-arrays.js';
+import { attributeSetOf, type ElementKind, type MeshArraySpec, meshArrays, slotCount } from '../mesh-arrays.js';
 
 export interface ChangeRecord {
   before: SlotState;
@@ -140,13 +140,12 @@ export function pointerDiffOf(record: ChangeRecord, limit = DIFF_LISTED): Pointe
   // indexed entries come sorted (see ChangeRecorder.record) and each range by id: the first
   // `limit` of each kind from each source hold the first `limit` of all
   const listed = [0, 0, 0];
-  const take = (arrayIndex: number, id: number, before: number, after: number) => {
-    const spec = meshArrays[arrayIndex];
-    if (!spec.field || before === after) return;
+  for (let i = 0; i < array.length; i++) {
+    const spec = meshArrays[array[i]];
+    if (!spec.field || old[i] === now[i]) continue;
     total++;
-    if (listed[ownerOrder[spec.owner]]++ < limit) candidates.push({ element: spec.owner as PointerChange['element'], id, field: spec.field, before, after });
-  };
-  for (let i = 0; i < array.length; i++) take(array[i], index[i], old[i], now[i]);
+    if (listed[ownerOrder[spec.owner]]++ < limit) candidates.push(pointerChange(spec, index[i], old[i], now[i]));
+  }
   // a range may hold millions of fields: counted in a plain loop, the first `limit` taken
   for (const { array, start, old, new: now } of record.ranges) {
     const spec = meshArrays[array];
@@ -156,12 +155,16 @@ export function pointerDiffOf(record: ChangeRecord, limit = DIFF_LISTED): Pointe
       const before = old ? old[i] : spec.initial;
       if (before === now[i]) continue;
       total++;
-      if (listedHere++ < limit) candidates.push({ element: spec.owner as PointerChange['element'], id: start + i, field: spec.field, before, after: now[i] });
+      if (listedHere++ < limit) candidates.push(pointerChange(spec, start + i, before, now[i]));
     }
   }
-  const order = (change: PointerChange) => ownerOrder[change.element] * 16 + meshArrays.findIndex((spec) => spec.owner === change.element && spec.field === change.field);
-  candidates.sort((p, q) => ownerOrder[p.element] - ownerOrder[q.element] || p.id - q.id || order(p) - order(q));
+  const fieldOrder = (change: PointerChange) => meshArrays.findIndex((spec) => spec.owner === change.element && spec.field === change.field);
+  candidates.sort((p, q) => ownerOrder[p.element] - ownerOrder[q.element] || p.id - q.id || fieldOrder(p) - fieldOrder(q));
   return { changes: candidates.slice(0, limit), total };
+}
+
+function pointerChange(spec: MeshArraySpec, id: number, before: number, after: number): PointerChange {
+  return { element: spec.owner as PointerChange['element'], id, field: spec.field!, before, after };
 }
 
 /**

@@ -98,8 +98,18 @@ export class SurfaceLayer {
       this.boundMoved(patch);
       if (this.workerReady) this.workerReady = this.patchPickingWorker(patch);
     } else {
-      this.setBuffers(render);
+      const position = new BufferAttribute(render.positions, 3);
+      this.faces.setAttribute('position', position);
+      this.faces.setIndex(new BufferAttribute(render.triangles, 1));
+      this.triangleFace = render.triangleFace;
       this.workerReady = render.picking ? this.sendToPickingWorker(render.picking) : null;
+      // the lines and dots share the positions
+      this.lines.setAttribute('position', position);
+      this.lines.setIndex(new BufferAttribute(render.edges, 1));
+      this.vertices.setAttribute('position', position);
+      this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
+      this.faces.boundingSphere = new Sphere(new Vector3(...render.bounds.center), render.bounds.radius);
+      this.edgeLength = medianEdgeLength(render.positions, render.edges, counts.edges);
     }
     this.faces.setDrawRange(0, 3 * triangles);
     this.lines.setDrawRange(0, 2 * counts.edges);
@@ -109,21 +119,6 @@ export class SurfaceLayer {
     this.vertices.boundingSphere = this.faces.boundingSphere!.clone();
     // a point set (no faces) shows its vertices however many there are
     this.dots.visible = counts.vertices <= MAX_DOTS || triangles === 0;
-  }
-
-  /** Draws from new arrays (the picking worker is told apart). */
-  private setBuffers(render: RenderBuffers): void {
-    const position = new BufferAttribute(render.positions, 3);
-    this.faces.setAttribute('position', position);
-    this.faces.setIndex(new BufferAttribute(render.triangles, 1));
-    this.triangleFace = render.triangleFace;
-    // the lines and dots share the positions
-    this.lines.setAttribute('position', position);
-    this.lines.setIndex(new BufferAttribute(render.edges, 1));
-    this.vertices.setAttribute('position', position);
-    this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
-    this.faces.boundingSphere = new Sphere(new Vector3(...render.bounds.center), render.bounds.radius);
-    this.edgeLength = medianEdgeLength(render.positions, render.edges, render.counts.edges);
   }
 
   /**
