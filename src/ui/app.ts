@@ -3,7 +3,7 @@
  * (camera, selection, the path walked, which table is open). Every change to the mesh is asked of
  * the worker; every pointer question is answered here, from the snapshot's arrays.
  */
-import { type Box3, Vector3 } from 'three';
+import { type Box3, type Object3D, Vector3 } from 'three';
 import { type HalfedgeMesh, type PointerDiff, type SerializedMesh, meshToHalfedgeJSON, type Repair, type RepairIncident, type RepairKind } from '../core/index.js';
 import { colors } from './colors.js';
 import { SessionClient } from '../workers/client.js';
@@ -13,7 +13,7 @@ import { PICK_IN_WORKER_ABOVE, type RenderPatch, type StudentVerb, type VerbArgu
 import { recordWrites } from '../core/practice/writes.js';
 import { byId, capitalized, el } from './dom.js';
 import { hoverHighlight, idLabels, phaseHighlight, phaseMeanings, quizHighlight } from './highlights.js';
-import { boundaryLoopList, incidentBounds, loopBounds, meshBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
+import { boundaryLoopList, incidentBounds, loopBounds, neighbourhoodPoints, selectionBounds, selectionFacing } from './framing.js';
 import { renderExport } from './panels/export.js';
 import { incidentTarget, renderFileInfo } from './panels/file-info.js';
 import { renderHelp } from './panels/help.js';
@@ -138,6 +138,10 @@ export class App {
   private frameAgain: () => void = () => this.frameMesh();
   /** The phase marks last worked out, and the snapshot they are of (see `phaseMarks`). */
   private marked: { snapshot: Snapshot; marks: HighlightSpec } | null = null;
+  /** What the phase layer draws, or is about to (see `drawPhaseMarks`). */
+  private phaseMarksDrawn: { marks: HighlightSpec | null; mesh: HalfedgeMesh; scale: number } | null = null;
+  /** The phase layer's marks are yet to be laid out: the view waits for them. */
+  private marksPending = false;
   /** The boundary loops last listed, and the snapshot they are of (see `boundaryLoops`). */
   private loops: { snapshot: Snapshot; loops: BoundaryLoop[] } | null = null;
   private readonly gizmo: PlaneGizmo;
@@ -176,8 +180,11 @@ export class App {
     });
     this.viewer = new Viewer(this.byId('viewport'));
     this.viewer.add(this.surface.group, this.arrows.group, this.phaseLayer.group, this.selectionLayer.group, this.hoverLayer.group, this.idLayer.group);
-    // once the first mesh is drawn, in the time the student takes to look at it
-    void this.ready.then(() => this.surface.prepareColours(this.viewer));
+    // shaders, once the first mesh is drawn, in the time the student takes to look at it
+    void this.ready.then(() => {
+      const precompile = (object: Object3D) => this.viewer.precompile(object);
+      return Promise.all([this.surface.prepareColours(this.viewer), ...[this.phaseLayer, this.selectionLayer, this.hoverLayer].map((layer) => layer.prepare(this.mesh!, precompile))]);
+    });
     this.gizmo = new PlaneGizmo(this.viewer, (plane) => this.operations.setPlane(plane));
     this.viewer.add(this.gizmo.group);
     this.detail = new ViewDetail(
@@ -190,6 +197,8 @@ export class App {
     );
     this.viewer.controls.addEventListener('end', () => this.detail.refreshIfPartial());
     this.viewer.beforeDraw = () => this.detail.fit();
+    // the surface's arrays a slice per frame; the view draws once they and the phase's marks are all there
+    this.viewer.beforeFrame = () => this.surface.uploadSlice(this.viewer.renderer) || this.marksPending;
     // labels and framed meshes keep off the overlays on the view
     this.viewer.overlays = () =>
       ['legend', 'hud', 'status', 'values-legend', 'arrow-note'].flatMap((id) => {
@@ -531,7 +540,7 @@ export class App {
     this.exploded = explosion !== null;
     this.drawn = explosion ? explodedMesh(mesh, explosion) : mesh;
     // the moved positions are a copy, uploaded whole; the page's own were patched in place
-    this.surface.update(explosion ? explodedRender(render, explosion) : render, explosion ? null : patch);
+    this.surface.update(explosion ? explodedRender(render, explosion, this.drawn) : render, explosion ? null : patch);
     this.byId('explode').setAttribute('aria-pressed', String(this.exploded));
   }
 
@@ -605,7 +614,7 @@ export class App {
 
   frameMesh(): void {
     if (!this.drawn) return;
-    const { box, radius } = meshBounds(this.drawn);
+    const { box, radius } = this.surface.bounds;
     this.viewer.frame(box, this.viewNormal(), radius);
     this.framedWhole = true;
     this.frameAgain = () => this.frameMesh();
@@ -985,13 +994,37 @@ export class App {
     return this.marked.marks;
   }
 
+  /**
+   * The marks of the phase on show, drawn again only when they, the mesh drawn or the scale
+   * change. A phase marks thousands of elements: they are laid out in tasks of their own after
+   * the one that shows the snapshot (each then well within the 100 ms a page may keep its input
+   * waiting), and the view draws the snapshot once they are all there (see `marksPending`).
+   */
+  private drawPhaseMarks(mesh: HalfedgeMesh): void {
+    const marks = this.phaseMarks();
+    const drawing = { marks, mesh, scale: this.scale };
+    const last = this.phaseMarksDrawn;
+    if (last && last.marks === marks && last.mesh === mesh && last.scale === this.scale) return;
+    this.phaseMarksDrawn = drawing;
+    if (!marks) {
+      this.phaseLayer.clear();
+      this.marksPending = false;
+      return;
+    }
+    this.marksPending = true;
+    void this.phaseLayer.showInTasks(mesh, marks, this.scale).then((done) => {
+      // overtaken: the later call clears the flag
+      if (!done) return;
+      this.marksPending = false;
+      this.viewer.requestRender();
+    });
+  }
+
   private drawSelection(): void {
     const mesh = this.drawn;
     if (!mesh) return;
     this.selectionLayer.show(mesh, this.inspection.highlight(mesh), this.scale);
-    const marks = this.phaseMarks();
-    if (marks) this.phaseLayer.show(mesh, marks, this.scale);
-    else this.phaseLayer.clear();
+    this.drawPhaseMarks(mesh);
     this.idLayer.clear();
     if (this.showIds && mesh.nVertices + mesh.nFaces <= MAX_ID_LABELS) this.idLayer.show(mesh, idLabels(mesh), this.scale);
     this.viewer.requestRender();

@@ -18,6 +18,7 @@
  */
 import { boundingSphere, componentRoots, type HalfedgeMesh, unitPlane } from '../core/index.js';
 import type { HistoryItem, RenderBuffers } from '../workers/protocol.js';
+import { renderBounds } from '../workers/render.js';
 
 /**
  * How far each part moves, as a share of the whole mesh's bounding radius: the two halves of a cut
@@ -99,11 +100,11 @@ export function explodedMesh(mesh: HalfedgeMesh, { offsets }: Explosion): Halfed
   return Object.create(mesh, { positions: { value: moved } }) as HalfedgeMesh;
 }
 
-/** The render buffers with the positions moved by the offsets (a copy), and a bounding sphere that takes the parts in where they moved to. */
-export function explodedRender(render: RenderBuffers, { offsets, distance }: Explosion): RenderBuffers {
+/** The render buffers with the positions moved by the offsets (a copy), and the bounds of the parts where they moved to (`exploded` is the mesh `explodedMesh` gave). */
+export function explodedRender(render: RenderBuffers, { offsets }: Explosion, exploded: HalfedgeMesh): RenderBuffers {
   const positions = render.positions.slice();
   for (let i = 0; i < offsets.length; i++) positions[i] += offsets[i];
-  return { ...render, positions, bounds: { center: render.bounds.center, radius: render.bounds.radius + distance } };
+  return { ...render, positions, bounds: renderBounds(exploded) };
 }
 
 /** The plane of the cut that made the mesh on show, when it kept both sides (the entry of the history the view is at); else null. */

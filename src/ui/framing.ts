@@ -5,8 +5,6 @@
 import { Box3, Vector3 } from 'three';
 import {
   boundaryLoops,
-  boundingBox,
-  boundingSphere,
   faceCentroid,
   faceVectorArea,
   faceVertices,
@@ -25,13 +23,6 @@ import type { Selection } from './selection.js';
 export interface Bounds {
   box: Box3;
   radius: number;
-}
-
-/** The whole mesh. */
-export function meshBounds(mesh: HalfedgeMesh): Bounds {
-  const box = boundingBox(mesh);
-  if (!box) return { box: new Box3(), radius: 0 };
-  return { box: new Box3(new Vector3(...box.min), new Vector3(...box.max)), radius: boundingSphere(mesh, box)!.radius };
 }
 
 /** An element, the faces around it and everything its highlight draws (the arrows of its pointers). */

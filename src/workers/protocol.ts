@@ -11,6 +11,7 @@
  */
 import { transferHandlers } from 'comlink';
 import {
+  type BoundingBox,
   type BoundingSphere,
   type BuildReport,
   changeBuffers,
@@ -86,8 +87,8 @@ export interface RenderBuffers {
   counts: { vertices: number; edges: number; triangles: number };
   /** The normal of the plane every face lies in, for a 2D mesh; null for a 3D one. */
   planeNormal: [number, number, number] | null;
-  /** A sphere around every live vertex, measured here rather than on the page's thread. */
-  bounds: BoundingSphere;
+  /** The box and the sphere around every live vertex, measured here rather than on the page's thread. */
+  bounds: RenderBounds;
   /**
    * Copies of `positions` and `triangles` for the picking worker (the page draws from the
    * originals), made here so that the page only passes them on; null up to PICK_IN_WORKER_ABOVE
@@ -105,6 +106,12 @@ export const PHASE_MARKS = 5000;
  * record itself comes as the snapshot's patch.
  */
 export type ShownPhase = Omit<Phase, 'change'> & PhaseElements;
+
+/**
+ * The box and the sphere around every live vertex (`boundingBox`, `boundingSphere`): the view is
+ * framed on them, and three.js culls by the sphere. No live vertex: a point at the origin.
+ */
+export type RenderBounds = BoundingBox & BoundingSphere;
 
 /** A patch that writes more positions than this carries the bounds measured again; one that writes fewer, the page grows its own to take them in. */
 export const REBOUND_ABOVE = 4096;
@@ -127,7 +134,7 @@ export interface RenderPatch {
    */
   picking: RenderWrite[] | null;
   /** The bounds again, when the patch writes more than REBOUND_ABOVE positions; else null. */
-  bounds: BoundingSphere | null;
+  bounds: RenderBounds | null;
 }
 
 /**

@@ -18,11 +18,11 @@
  * phase rewires every face), which the page takes whole: its arrays are transferred, where
  * patching its own would copy hundreds of megabytes on the page's thread.
  */
-import type { BoundingSphere, ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
+import type { ChangeRecord, HalfedgeMesh, ValueChange } from '../core/index.js';
 import { forEachPointerWrite } from '../core/index.js';
-import { boundingSphere, faceNormal } from '../core/index.js';
+import { boundingBox, boundingSphere, faceNormal } from '../core/index.js';
 import { meshArrayIndex } from '../core/mesh-arrays.js';
-import { PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
+import { PICK_IN_WORKER_ABOVE, REBOUND_ABOVE, type RenderBounds, type RenderBuffers, type RenderPatch, type RenderWrite } from './protocol.js';
 import { faceTriangles, quadSplitCorner, writeFaceTriangles } from '../core/face-triangles.js';
 
 /** Spare room in every buffer, so that edits rarely need a fresh layout. */
@@ -94,7 +94,7 @@ export class RenderLayout {
       triangleFace,
       counts: used,
       planeNormal: planeNormal(mesh),
-      bounds: boundsOf(mesh),
+      bounds: renderBounds(mesh),
       picking: this.pickingInWorker ? { positions: positions.slice(), triangles: triangles.slice(0, 3 * used.triangles) } : null,
     };
   }
@@ -154,7 +154,7 @@ export class RenderLayout {
       if (data.length > 0) writes.push({ buffer: 'triangles', offset: 3 * start, data }, { buffer: 'triangleFace', offset: start, data: faces });
     }
     const picking = this.pickingInWorker ? writes.filter((w) => w.buffer === 'positions' || w.buffer === 'triangles').map((w) => ({ ...w, data: w.data.slice() })) : null;
-    return { writes, counts: this.counts(mesh), picking, bounds: positions.reduce((sum, w) => sum + w.data.length / 3, 0) > REBOUND_ABOVE ? boundsOf(mesh) : null };
+    return { writes, counts: this.counts(mesh), picking, bounds: positions.reduce((sum, w) => sum + w.data.length / 3, 0) > REBOUND_ABOVE ? renderBounds(mesh) : null };
   }
 
   /**
@@ -301,9 +301,11 @@ function positionWrites(mesh: HalfedgeMesh, moved: ValueChange[], touched: Set<n
   return [{ buffer: 'positions', offset: 3 * first, data: new Float32Array(mesh.positions.subarray(3 * first, 3 * last + 3)) }];
 }
 
-/** The bounding sphere of the live vertices (none: a point at the origin). */
-function boundsOf(mesh: HalfedgeMesh): BoundingSphere {
-  return boundingSphere(mesh) ?? { center: [0, 0, 0], radius: 0 };
+/** The box and the sphere around the live vertices (none: a point at the origin). */
+export function renderBounds(mesh: HalfedgeMesh): RenderBounds {
+  const box = boundingBox(mesh);
+  if (!box) return { min: [0, 0, 0], max: [0, 0, 0], center: [0, 0, 0], radius: 0 };
+  return { ...box, ...boundingSphere(mesh, box)! };
 }
 
 function writeEdge(mesh: HalfedgeMesh, e: number, edges: Uint32Array, at: number): void {

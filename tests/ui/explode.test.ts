@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { boundingSphere, buildMesh, cutMesh, type HalfedgeMesh, meshFingerprint, mergeSoups, type PolygonSoup, tetrahedron, torus } from '../../src/index.js';
 import { cutPlaneOnShow, EXPLODE_SHARE, explodedMesh, explodedRender, explodeOffsets } from '../../src/ui/explode.js';
-import { RenderLayout } from '../../src/workers/render.js';
+import { RenderLayout, renderBounds } from '../../src/workers/render.js';
 
 /** A soup moved by (dx, dy, dz). */
 function moved(soup: PolygonSoup, dx: number, dy: number, dz: number): PolygonSoup {
@@ -81,7 +81,7 @@ describe('the exploded mesh and render buffers', () => {
     const explosion = explodeOffsets(mesh, [0, 2, 0, 0.1])!;
     const drawn = explodedMesh(mesh, explosion);
     const render = new RenderLayout().full(mesh);
-    const drawnRender = explodedRender(render, explosion);
+    const drawnRender = explodedRender(render, explosion, drawn);
     for (const v of mesh.vertices()) {
       const expected = mesh.position(v).map((x, k) => x + explosion.offsets[3 * v + k]);
       expect(drawn.position(v)).toEqual(expected);
@@ -93,8 +93,14 @@ describe('the exploded mesh and render buffers', () => {
     expect(drawn.heNext).toBe(mesh.heNext);
     expect(drawn.nFaces).toBe(mesh.nFaces);
     expect(drawnRender.triangles).toBe(render.triangles);
-    // the bounds take in the parts where they moved to
-    expect(drawnRender.bounds.radius).toBe(render.bounds.radius + explosion.distance);
+    // the bounds are those of the parts where they moved to: every moved vertex inside the box and the sphere
+    expect(drawnRender.bounds).toEqual(renderBounds(drawn));
+    for (const v of drawn.vertices()) {
+      const p = drawn.position(v);
+      expect(Math.hypot(...p.map((x, k) => x - drawnRender.bounds.center[k]))).toBeLessThanOrEqual(drawnRender.bounds.radius * (1 + 1e-12));
+      p.forEach((x, k) => expect(x >= drawnRender.bounds.min[k] && x <= drawnRender.bounds.max[k]).toBe(true));
+    }
+    expect(drawnRender.bounds.radius).toBeGreaterThan(render.bounds.radius);
     expect(meshFingerprint(mesh)).toBe(before);
     expect(render.positions[1]).toBe(Math.fround(mesh.positions[1]));
   });

@@ -3,8 +3,8 @@
  * after a face shrank and grew back many times (its range stays, its polygon count must not drift).
  */
 import { describe, expect, it } from 'vitest';
-import { applyChange, type BoundingSphere, buildMesh, type ChangeRecord, grid, invertChange, noChange, positionsChange, smooth, triangulateFace, uvSphere } from '../../src/index.js';
-import { REBOUND_ABOVE, type RenderBuffers } from '../../src/workers/protocol.js';
+import { applyChange, buildMesh, type ChangeRecord, grid, invertChange, noChange, positionsChange, smooth, triangulateFace, uvSphere } from '../../src/index.js';
+import { REBOUND_ABOVE, type RenderBounds, type RenderBuffers } from '../../src/workers/protocol.js';
 import { RenderLayout } from '../../src/workers/render.js';
 
 /** The triangles the buffers draw, each as its sorted corners and its face. */
@@ -57,10 +57,16 @@ describe('the render layout, patched', () => {
     const { mesh } = buildMesh(uvSphere(64, 96));
     expect(mesh.vertexSlots).toBeGreaterThan(REBOUND_ABOVE);
     const layout = new RenderLayout();
-    const holdsEveryVertex = (bounds: BoundingSphere) => {
+    const holdsEveryVertex = (bounds: RenderBounds) => {
       for (const v of mesh.vertices()) {
         const p = mesh.position(v);
         expect(Math.hypot(p[0] - bounds.center[0], p[1] - bounds.center[1], p[2] - bounds.center[2])).toBeLessThanOrEqual(bounds.radius * (1 + 1e-12));
+        p.forEach((x, k) => expect(x >= bounds.min[k] && x <= bounds.max[k]).toBe(true));
+      }
+      // the box is the tightest: a vertex on each of its sides
+      for (let k = 0; k < 3; k++) {
+        expect([...mesh.vertices()].some((v) => mesh.position(v)[k] === bounds.min[k])).toBe(true);
+        expect([...mesh.vertices()].some((v) => mesh.position(v)[k] === bounds.max[k])).toBe(true);
       }
     };
     holdsEveryVertex(layout.full(mesh).bounds);

@@ -12,6 +12,7 @@ import {
   InstancedMesh,
   Mesh,
   MeshBasicMaterial,
+  type Object3D,
   Points,
   PointsMaterial,
 } from 'three';
@@ -49,6 +50,8 @@ const EDGE_LINE_PIXELS = 3;
 export class HighlightLayer {
   readonly group = new Group();
   private readonly dotTexture = roundDot();
+  /** Counts the calls of `clear` (every show begins with one), so a show in tasks knows when it was overtaken. */
+  private shown = 0;
 
   /**
    * `opacity` < 1 for the hover preview; `widthScale` makes the highlighted arrows stand out;
@@ -60,19 +63,61 @@ export class HighlightLayer {
     private readonly dotSize = 18,
   ) {}
 
+  /**
+   * Compiles the shaders of every kind of mark this layer draws ahead of their first use, on any
+   * mesh with a face: the first thousands of marks of a phase would otherwise hold up the frame
+   * that draws them by a hundred milliseconds on a software renderer. Three.js keeps the programs.
+   */
+  prepare(mesh: HalfedgeMesh, precompile: (object: Object3D) => Promise<unknown>): Promise<unknown> {
+    const face = mesh.faces().next();
+    if (face.done) return Promise.resolve();
+    const halfedge = mesh.faceHalfedge(face.value);
+    const trial = new HighlightLayer(this.opacity, this.widthScale, this.dotSize);
+    trial.show(mesh, { halfedges: [{ id: halfedge, color: '#000', hollow: true }], faces: [{ id: face.value, color: '#000' }], vertices: [{ id: mesh.origin(halfedge), color: '#000' }], edges: [{ id: halfedge >> 1, color: '#000' }], labels: [] }, 1);
+    // the programs are chosen as the call begins: the marks may go at once
+    const compiled = precompile(trial.group);
+    trial.clear();
+    return compiled;
+  }
+
   show(mesh: HalfedgeMesh, spec: HighlightSpec, scale: number): void {
     this.clear();
+    for (const part of this.parts(mesh, spec, scale)) part();
+  }
+
+  /**
+   * The same, a part per task (the tint, the arrows, the lines, the dots, the labels): a phase's
+   * thousands of marks at once would keep the page's input waiting. Resolves once all are drawn,
+   * or to false when another `show` or `clear` came first.
+   */
+  async showInTasks(mesh: HalfedgeMesh, spec: HighlightSpec, scale: number): Promise<boolean> {
+    this.clear();
+    const shown = this.shown;
+    for (const part of this.parts(mesh, spec, scale)) {
+      await new Promise((resolve) => setTimeout(resolve));
+      if (this.shown !== shown) return false;
+      part();
+    }
+    return true;
+  }
+
+  /** What `show` draws, in parts. */
+  private parts(mesh: HalfedgeMesh, spec: HighlightSpec, scale: number): Array<() => void> {
     const transparent = this.opacity < 1;
-    if (spec.faces.length) this.group.add(this.faceTint(mesh, spec.faces));
-    // labels keep off the tinted faces as well: their centres, and halfway to each corner
-    if (spec.labels.length > 0 && spec.faces.length <= MAX_MARKED) {
+    // labels keep off the marks: points on each where there are few enough to mark
+    const labelsAvoid = (marks: number) => spec.labels.length > 0 && marks <= MAX_MARKED;
+    const parts: Array<() => void> = [];
+    if (spec.faces.length) parts.push(() => {
+      this.group.add(this.faceTint(mesh, spec.faces));
+      // the tinted faces' centres, and halfway to each corner
+      if (!labelsAvoid(spec.faces.length)) return;
       for (const { id } of spec.faces) {
         const corners = [...faceVertices(mesh, id)].map((v) => mesh.position(v));
         const centre = [0, 1, 2].map((k) => corners.reduce((sum, p) => sum + p[k], 0) / corners.length);
         this.group.add(avoidMarker(centre, centre, 0), ...corners.map((corner) => avoidMarker(centre, corner, 0.5)));
       }
-    }
-    if (spec.halfedges.length) {
+    });
+    if (spec.halfedges.length) parts.push(() => {
       const arrows = new InstancedMesh(
         shape,
         new MeshBasicMaterial({
@@ -86,25 +131,24 @@ export class HighlightLayer {
         spec.halfedges.length,
       );
       const placement = newPlacement();
-      // where labels are drawn too, points along each arrow tell them where not to go
-      const markArrows = spec.labels.length > 0 && spec.halfedges.length <= MAX_MARKED;
+      // points along each arrow
+      const markArrows = labelsAvoid(spec.halfedges.length);
       spec.halfedges.forEach(({ id, color }, i) => {
         const arrow = placeArrow(mesh, id, placement, scale);
         writeArrowMatrix(arrow, arrows.instanceMatrix.array, 16 * i, this.widthScale);
-        arrows.setColorAt(i, new Color(color));
+        arrows.setColorAt(i, colour(color));
         if (markArrows) for (const t of ARROW_MARKS) this.group.add(avoidMarker(arrow.start, arrow.end, t));
       });
       arrows.renderOrder = 2;
-      arrows.raycast = () => {};
-      this.group.add(arrows);
+      this.group.add(asMarks(arrows));
       const hollow = spec.halfedges.filter((h) => h.hollow);
       if (hollow.length) this.group.add(this.hollowCores(mesh, hollow.map((h) => h.id), scale));
-    }
-    if (spec.edges.length) {
+    });
+    if (spec.edges.length) parts.push(() => {
       const points: number[] = [];
       const lineColors: number[] = [];
       for (const { id, color } of spec.edges) {
-        const c = new Color(color);
+        const c = colour(color);
         for (const v of [mesh.origin(mesh.edgeHalfedge(id)), mesh.origin(mesh.twin(mesh.edgeHalfedge(id)))]) {
           points.push(...mesh.position(v));
           lineColors.push(c.r, c.g, c.b);
@@ -116,15 +160,15 @@ export class HighlightLayer {
         new LineMaterial({ vertexColors: true, linewidth: EDGE_LINE_PIXELS * scale, transparent, opacity: this.opacity }),
       );
       lines.renderOrder = 2;
-      this.group.add(withNoRaycast(lines));
-    }
-    if (spec.vertices.length) {
+      this.group.add(asMarks(lines));
+    });
+    if (spec.vertices.length) parts.push(() => {
       const points: number[] = [];
       const dotColors: number[] = [];
-      // labels keep off the dots too, as off the arrows
-      const markDots = spec.labels.length > 0 && spec.vertices.length <= MAX_MARKED;
+      // the dots themselves
+      const markDots = labelsAvoid(spec.vertices.length);
       for (const { id, color } of spec.vertices) {
-        const c = new Color(color);
+        const c = colour(color);
         const at = mesh.position(id);
         points.push(...at);
         dotColors.push(c.r, c.g, c.b);
@@ -135,20 +179,23 @@ export class HighlightLayer {
         new PointsMaterial({ size: this.dotSize * scale, sizeAttenuation: false, vertexColors: true, map: this.dotTexture, alphaTest: 0.5, transparent, opacity: this.opacity }),
       );
       dots.renderOrder = 3;
-      this.group.add(withNoRaycast(dots));
-    }
-    for (const { text, on, color, sentence } of spec.labels) {
-      // the anchor is what the label renderer positions; the tag inside may be nudged off others
-      const anchor = document.createElement('div');
-      const tag = document.createElement('span');
-      tag.className = sentence ? 'label sentence' : 'label';
-      tag.textContent = text; // text, never HTML
-      tag.style.borderColor = color;
-      anchor.append(tag);
-      const label = new CSS2DObject(anchor);
-      label.position.set(...labelPoint(mesh, on));
-      this.group.add(label);
-    }
+      this.group.add(asMarks(dots));
+    });
+    if (spec.labels.length) parts.push(() => {
+      for (const { text, on, color, sentence } of spec.labels) {
+        // the anchor is what the label renderer positions; the tag inside may be nudged off others
+        const anchor = document.createElement('div');
+        const tag = document.createElement('span');
+        tag.className = sentence ? 'label sentence' : 'label';
+        tag.textContent = text; // text, never HTML
+        tag.style.borderColor = color;
+        anchor.append(tag);
+        const label = new CSS2DObject(anchor);
+        label.position.set(...labelPoint(mesh, on));
+        this.group.add(label);
+      }
+    });
+    return parts;
   }
 
   /**
@@ -172,11 +219,11 @@ export class HighlightLayer {
       writeArrowMatrix(arrow, cores.instanceMatrix.array, 16 * i, this.widthScale * 0.4);
     });
     cores.renderOrder = 2.5;
-    cores.raycast = () => {};
-    return cores;
+    return asMarks(cores);
   }
 
   clear(): void {
+    this.shown++;
     for (const child of [...this.group.children]) {
       if (child instanceof CSS2DObject) child.element.remove();
       if ('geometry' in child && child.geometry instanceof BufferGeometry && child.geometry !== shape) child.geometry.dispose();
@@ -188,7 +235,7 @@ export class HighlightLayer {
     const points: number[] = [];
     const tint: number[] = [];
     for (const { id, color } of faces) {
-      const c = new Color(color);
+      const c = colour(color);
       const loop: number[] = [];
       const start = mesh.faceHalfedge(id);
       let h = start;
@@ -214,7 +261,7 @@ export class HighlightLayer {
       polygonOffsetFactor: 0.5,
       polygonOffsetUnits: 1,
     });
-    return withNoRaycast(new Mesh(geometry(points, tint), material));
+    return asMarks(new Mesh(geometry(points, tint), material));
   }
 }
 
@@ -225,9 +272,23 @@ function geometry(points: number[], pointColors: number[]): BufferGeometry {
   return g;
 }
 
-function withNoRaycast<T extends Mesh | Points>(object: T): T {
+/**
+ * Drawn over the mesh as they are: no ray tests them (picking goes to the surface), and no
+ * culling first measures a sphere around them (a phase's thousands lie all over the mesh).
+ */
+function asMarks<T extends Mesh | Points>(object: T): T {
   object.raycast = () => {};
+  object.frustumCulled = false;
   return object;
+}
+
+const colours = new Map<string, Color>();
+
+/** The colour of a CSS colour string, parsed once: a phase marks thousands of elements in a few colours. */
+function colour(css: string): Color {
+  let parsed = colours.get(css);
+  if (!parsed) colours.set(css, (parsed = new Color(css)));
+  return parsed;
 }
 
 /** A round dot for vertex markers (points are squares otherwise). */

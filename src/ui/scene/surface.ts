@@ -5,6 +5,7 @@
  * bounding-volume hierarchy (three-mesh-bvh) for a large one.
  */
 import {
+  Box3,
   BufferAttribute,
   BufferGeometry,
   Color,
@@ -21,9 +22,11 @@ import {
   type Raycaster,
   Sphere,
   Vector3,
+  type WebGLRenderer,
 } from 'three';
 import { type Remote, transfer, wrap } from 'comlink';
-import type { RenderBuffers, RenderPatch } from '../../workers/protocol.js';
+import type { RenderBounds, RenderBuffers, RenderPatch } from '../../workers/protocol.js';
+import { GpuArray, SLICE_BYTES } from './gpu-array.js';
 import { colors } from '../colors.js';
 import type { ColourScale } from '../../workers/colour-scale.js';
 import type { PickingApi, PickingWrite } from './picking.worker.js';
@@ -41,14 +44,35 @@ export class SurfaceLayer {
   private readonly faces = new BufferGeometry();
   private readonly lines = new BufferGeometry();
   private readonly vertices = new BufferGeometry();
+  /** The arrays on the GPU, which the page puts there a slice per frame (see gpu-array.ts). */
+  private readonly gpu = {
+    // the lines and dots share the positions (three.js draws from a GLBufferAttribute as from
+    // its own, though its types allow only those)
+    positions: new GpuArray(false, (a) => [this.faces, this.lines, this.vertices].forEach((g) => g.setAttribute('position', a as unknown as BufferAttribute))),
+    triangles: new GpuArray(true, (a) => this.faces.setIndex(a as unknown as BufferAttribute)),
+    edges: new GpuArray(true, (a) => this.lines.setIndex(a as unknown as BufferAttribute)),
+    vertices: new GpuArray(true, (a) => this.vertices.setIndex(a as unknown as BufferAttribute)),
+  };
+  /** The render buffers drawn (the page patches them in place). */
+  private render: RenderBuffers | null = null;
+  /** Whether the edge lines and the vertex dots are to show (each does once its array is on the GPU: see `uploadSlice`). */
+  private wanted = { edges: true, dots: false };
+  /** Called once the surface is all on the GPU (see `onGpu`). */
+  private readonly waitingForGpu: Array<() => void> = [];
+  /** Signalled once the GPU has taken the last slice sent (see `lastSliceTaken`). */
+  private sliceSent: WebGLSync | null = null;
+  /** The box and the sphere around what is drawn, for framing and culling (see `boundMoved`); every geometry has the one sphere. */
+  private readonly box = new Box3();
+  private readonly sphere = new Sphere();
   /** Both sides in one draw (half the work of two), the back in its own shade. */
   private readonly surface: Mesh<BufferGeometry, MeshStandardMaterial>;
   /** The back side's colour, a uniform of the surface's shader. */
   private readonly backColour = { value: new Color(colors.surfaceBack) };
   private readonly edges: LineSegments;
   private readonly dots: Points;
-  /** Tests rays against both sides of every face; not drawn. */
-  private readonly pickTarget = new Mesh(this.faces, new MeshBasicMaterial({ side: DoubleSide }));
+  /** Tests rays against both sides of every face, on the page's copies of the arrays; not drawn. */
+  private readonly pickFaces = new BufferGeometry();
+  private readonly pickTarget = new Mesh(this.pickFaces, new MeshBasicMaterial({ side: DoubleSide }));
   private triangleFace: Int32Array = new Int32Array(0);
   /** The median length of a sample of the edges: how fine the mesh is. */
   edgeLength = 0;
@@ -72,70 +96,118 @@ export class SurfaceLayer {
     this.dots = new Points(this.vertices, new PointsMaterial({ color: colors.edge, size: 4, sizeAttenuation: false }));
     // what is drawn is not what is picked: rays go to the pick target
     for (const drawn of [this.surface, this.edges, this.dots]) drawn.raycast = () => {};
+    // the lines and dots share the bounds of the positions; the sphere is measured in the worker (three.js cannot read the GPU's arrays)
+    for (const geometry of [this.faces, this.pickFaces, this.lines, this.vertices]) geometry.boundingSphere = this.sphere;
     this.group.add(this.surface, this.edges, this.dots);
   }
 
   /**
    * Draws new buffers, or, with a patch, uploads again only the ranges it rewrote (the buffers
-   * themselves were patched in place by the session client).
+   * themselves were patched in place by the session client). Either reaches the GPU over the next
+   * frames (see `uploadSlice`).
    */
   update(render: RenderBuffers, patch: RenderPatch | null = null): void {
     const { counts } = render;
     const triangles = counts.triangles;
-    if (patch && this.faces.getAttribute('position')?.array === render.positions) {
-      const attributes = {
-        positions: this.faces.getAttribute('position') as BufferAttribute,
-        triangles: this.faces.getIndex()!,
-        edges: this.lines.getIndex()!,
-        vertices: this.vertices.getIndex()!,
-      };
+    if (patch && this.render?.positions === render.positions) {
       for (const { buffer, offset, data } of patch.writes) {
-        if (buffer === 'triangleFace') continue; // read here, never uploaded
-        const attribute = attributes[buffer];
-        attribute.addUpdateRange(offset, data.length);
-        attribute.needsUpdate = true;
+        if (buffer !== 'triangleFace') this.gpu[buffer].rewrote(offset, data.length); // triangleFace is read here, never uploaded
       }
       this.boundMoved(patch);
-      if (this.workerReady) this.workerReady = this.patchPickingWorker(patch);
+      // after the mesh it patches, which may still wait for the GPU
+      if (this.workerReady) this.workerReady = this.workerReady.then(() => this.patchPickingWorker(patch));
     } else {
-      const position = new BufferAttribute(render.positions, 3);
-      this.faces.setAttribute('position', position);
-      this.faces.setIndex(new BufferAttribute(render.triangles, 1));
+      for (const name of ['positions', 'triangles', 'edges', 'vertices'] as const) this.gpu[name].set(render[name]);
+      this.pickFaces.setAttribute('position', new BufferAttribute(render.positions, 3));
+      this.pickFaces.setIndex(new BufferAttribute(render.triangles, 1));
       this.triangleFace = render.triangleFace;
-      this.workerReady = render.picking ? this.sendToPickingWorker(render.picking) : null;
-      // the lines and dots share the positions
-      this.lines.setAttribute('position', position);
-      this.lines.setIndex(new BufferAttribute(render.edges, 1));
-      this.vertices.setAttribute('position', position);
-      this.vertices.setIndex(new BufferAttribute(render.vertices, 1));
-      this.faces.boundingSphere = new Sphere(new Vector3(...render.bounds.center), render.bounds.radius);
+      // once the surface is drawn: building the hierarchy takes a core the GPU's process needs meanwhile
+      const picking = render.picking;
+      this.workerReady = picking ? this.onGpu().then(() => this.sendToPickingWorker(picking)) : null;
+      this.bound(render.bounds);
       this.edgeLength = medianEdgeLength(render.positions, render.edges, counts.edges);
     }
+    this.render = render;
     this.faces.setDrawRange(0, 3 * triangles);
+    this.pickFaces.setDrawRange(0, 3 * triangles);
     this.lines.setDrawRange(0, 2 * counts.edges);
     this.vertices.setDrawRange(0, counts.vertices);
-    // the lines and dots share the bounds of the positions (one pass over them, not three)
-    this.lines.boundingSphere = this.faces.boundingSphere!.clone();
-    this.vertices.boundingSphere = this.faces.boundingSphere!.clone();
     // a point set (no faces) shows its vertices however many there are
-    this.dots.visible = counts.vertices <= MAX_DOTS || triangles === 0;
+    this.wanted.dots = counts.vertices <= MAX_DOTS || triangles === 0;
   }
 
   /**
-   * Keeps the bounding sphere around the positions a patch wrote: measured again in the worker
-   * when many moved (a smoothing step), else grown here to take in the few that did (an edit).
-   * Grown only, it may be larger than it need be, which costs nothing but a little culling.
+   * Puts the next slice of what the GPU lacks there (what is drawn first: the surface, then the
+   * lines and dots when they show). True while the surface is not all there: the view then keeps
+   * its last frame rather than draw new corners on old positions. The lines and dots show once
+   * theirs are there; hidden, theirs wait (a dense mesh never shows its lines).
+   */
+  uploadSlice(renderer: WebGLRenderer): boolean {
+    const { positions, triangles, edges, vertices } = this.gpu;
+    const drawn = [positions, triangles, ...(this.wanted.edges ? [edges] : []), ...(this.wanted.dots ? [vertices] : [])];
+    const gl = renderer.getContext() as WebGL2RenderingContext;
+    if (drawn.some((array) => !array.current) && this.lastSliceTaken(gl)) {
+      // three.js's vertex array objects keep their element buffers: bind none of them here
+      renderer.resetState();
+      let bytes = SLICE_BYTES;
+      for (const array of drawn) if (bytes > 0) bytes -= array.upload(gl, bytes);
+      this.sliceSent = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+      gl.flush();
+    }
+    this.edges.visible = this.wanted.edges && positions.current && edges.current;
+    this.dots.visible = this.wanted.dots && positions.current && vertices.current;
+    const onGpu = positions.current && triangles.current;
+    if (onGpu) for (const resolve of this.waitingForGpu.splice(0)) resolve();
+    return !onGpu;
+  }
+
+  /** Resolves once the surface is all on the GPU. */
+  private onGpu(): Promise<void> {
+    return new Promise((resolve) => this.waitingForGpu.push(resolve));
+  }
+
+  /**
+   * Whether the GPU has taken the last slice sent. A slice sent before would wait for it on the
+   * page's thread: the renderer's process shares two cores with the workers, and fell behind by
+   * hundreds of milliseconds while a worker built its picking hierarchy.
+   */
+  private lastSliceTaken(gl: WebGL2RenderingContext): boolean {
+    if (!this.sliceSent) return true;
+    if (gl.getSyncParameter(this.sliceSent, gl.SYNC_STATUS) !== gl.SIGNALED) return false;
+    gl.deleteSync(this.sliceSent);
+    this.sliceSent = null;
+    return true;
+  }
+
+  /** The box and the sphere around what is drawn, for framing it. */
+  get bounds(): { box: Box3; radius: number } {
+    return { box: this.box.clone(), radius: this.sphere.radius };
+  }
+
+  /** Takes bounds the worker measured. */
+  private bound({ min, max, center, radius }: RenderBounds): void {
+    this.box.set(new Vector3(...min), new Vector3(...max));
+    this.sphere.set(new Vector3(...center), radius);
+  }
+
+  /**
+   * Keeps the bounds around the positions a patch wrote: measured again in the worker when many
+   * moved (a smoothing step), else grown here to take in the few that did (an edit). Grown only,
+   * they may be larger than they need be, which costs a little culling and framing.
    */
   private boundMoved(patch: RenderPatch): void {
-    const sphere = this.faces.boundingSphere!;
     if (patch.bounds) {
-      sphere.set(new Vector3(...patch.bounds.center), patch.bounds.radius);
+      this.bound(patch.bounds);
       return;
     }
     const point = new Vector3();
     for (const { buffer, data } of patch.writes) {
       if (buffer !== 'positions') continue;
-      for (let i = 0; i + 2 < data.length; i += 3) sphere.expandByPoint(point.set(data[i], data[i + 1], data[i + 2]));
+      for (let i = 0; i + 2 < data.length; i += 3) {
+        point.set(data[i], data[i + 1], data[i + 2]);
+        this.box.expandByPoint(point);
+        this.sphere.expandByPoint(point);
+      }
     }
   }
 
@@ -144,17 +216,17 @@ export class SurfaceLayer {
    * seen from outside its bounding sphere. Half the work for a renderer without a GPU.
    */
   cullBackFaces(closedFacingOut: boolean, eye: Vector3): void {
-    const sphere = this.faces.boundingSphere;
-    const frontOnly = closedFacingOut && sphere !== null && eye.distanceTo(sphere.center) > sphere.radius;
+    const frontOnly = closedFacingOut && eye.distanceTo(this.sphere.center) > this.sphere.radius;
     const side = frontOnly ? FrontSide : DoubleSide;
     if (this.surface.material.side === side) return;
     this.surface.material.side = side;
     this.surface.material.needsUpdate = true;
   }
 
-  /** Shows or hides the edge lines (hidden where they would be denser than pixels). */
+  /** Shows or hides the edge lines (hidden where they would be denser than pixels), once their array is on the GPU. */
   showEdges(on: boolean): void {
-    this.edges.visible = on;
+    this.wanted.edges = on;
+    this.edges.visible = on && this.gpu.positions.current && this.gpu.edges.current;
   }
 
   /** Whether picking is quick enough to follow the pointer (hover previews). */
@@ -185,7 +257,7 @@ export class SurfaceLayer {
     if (scale) {
       // as long as the positions (which keep room for more vertices); the next phase's colours
       // go into the same buffer
-      const room = this.faces.getAttribute('position').array.length;
+      const room = this.render!.positions.length;
       const held = this.faces.getAttribute('color') as BufferAttribute | undefined;
       const attribute = held?.array.length === room ? held : new BufferAttribute(new Float32Array(room), 3);
       (attribute.array as Float32Array).set(scale.colours);

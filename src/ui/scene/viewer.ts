@@ -41,6 +41,11 @@ export class Viewer {
   lastDrawAt = 0;
   /** Called before each draw (the app shows or hides detail for the zoom). */
   beforeDraw: (() => void) | null = null;
+  /**
+   * Work at the start of every animation frame that drawing waits for: true while it is not done
+   * (the surface's arrays going to the GPU a slice per frame). The canvas keeps the last frame meanwhile.
+   */
+  beforeFrame: (() => boolean) | null = null;
   private needsRender = true;
   /** Where the framed mesh sits, from the middle of the view, as a share of its width and height (see `frame`). */
   private shift = { x: 0, y: 0 };
@@ -81,7 +86,8 @@ export class Viewer {
     const loop = () => {
       if (this.disposed) return;
       this.frames++;
-      if (this.needsRender) {
+      const waiting = this.beforeFrame?.() ?? false;
+      if (this.needsRender && !waiting) {
         this.needsRender = false;
         this.draw();
       }
