@@ -43,6 +43,7 @@ export function writeFaceTriangles(mesh: HalfedgeMesh, f: number, out: Uint32Arr
     }
     return n - 2;
   }
+  if (n <= SMALL && clipSmall(mesh.positions, n, scratchNormal, out, at)) return n - 2;
   const loop = Array.from(scratch.subarray(0, n));
   const corners = earClip(mesh.positions, loop, scratchNormal);
   for (let k = 0; k < corners.length; k++) out[3 * at + k] = loop[corners[k]];
@@ -151,6 +152,64 @@ function isConvex(p: Float64Array, loop: ArrayLike<number>, n: number, normal: n
     if (turn < 0 && turn * turn > STRAIGHT * (ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz) * normalSquared) return false;
   }
   return true;
+}
+
+/** Faces of up to this many corners that are not convex are ear-clipped by `clipSmall`. */
+const SMALL = 8;
+/** The corners `clipSmall` has yet to cut off, as positions in `scratch`. */
+const ring = new Int32Array(SMALL);
+
+/**
+ * Ear clipping of the small face in `scratch` around its normal, in 3D: cuts off a corner that
+ * turns with the normal and whose triangle holds no other corner left (seen along the normal),
+ * until three are left; the triangles wound as the face is. What earcut does, without projecting
+ * the face or allocating: a Catmull-Clark step leaves a million hexagons whose edge points turn
+ * back a little. False when no corner is an ear (an outline that crosses itself, or one whose
+ * corners left all go straight on): `earClip` then decides.
+ */
+function clipSmall(p: Float64Array, n: number, normal: number[], out: Uint32Array, at: number): boolean {
+  for (let i = 0; i < n; i++) ring[i] = scratch[i];
+  let left = n;
+  let t = at;
+  while (left > 3) {
+    let ear = -1;
+    for (let i = 0; i < left && ear < 0; i++) {
+      const a = ring[(i + left - 1) % left];
+      const b = ring[i];
+      const c = ring[(i + 1) % left];
+      if (turn(p, a, b, b, c, normal) <= 0) continue;
+      let empty = true;
+      for (let k = 0; k < left && empty; k++) {
+        const q = ring[k];
+        if (q === a || q === b || q === c) continue;
+        // q inside or on the triangle: to the left of (or on) all three of its sides
+        empty = !(turn(p, a, b, a, q, normal) >= 0 && turn(p, b, c, b, q, normal) >= 0 && turn(p, c, a, c, q, normal) >= 0);
+      }
+      if (empty) ear = i;
+    }
+    if (ear < 0) return false;
+    out[3 * t] = ring[(ear + left - 1) % left];
+    out[3 * t + 1] = ring[ear];
+    out[3 * t + 2] = ring[(ear + 1) % left];
+    t++;
+    ring.copyWithin(ear, ear + 1, left);
+    left--;
+  }
+  out[3 * t] = ring[0];
+  out[3 * t + 1] = ring[1];
+  out[3 * t + 2] = ring[2];
+  return true;
+}
+
+/** (b − a) × (d − c) along the normal: positive when going from a to b, c to d turns left around it. */
+function turn(p: Float64Array, a: number, b: number, c: number, d: number, normal: number[]): number {
+  const ux = p[3 * b] - p[3 * a];
+  const uy = p[3 * b + 1] - p[3 * a + 1];
+  const uz = p[3 * b + 2] - p[3 * a + 2];
+  const vx = p[3 * d] - p[3 * c];
+  const vy = p[3 * d + 1] - p[3 * c + 1];
+  const vz = p[3 * d + 2] - p[3 * c + 2];
+  return (uy * vz - uz * vy) * normal[0] + (uz * vx - ux * vz) * normal[1] + (ux * vy - uy * vx) * normal[2];
 }
 
 /**
