@@ -40,7 +40,8 @@ describe('GpuArray', () => {
     gpu.set(first);
     const slices: number[] = [];
     while (!gpu.current) slices.push(gpu.upload(gl as unknown as WebGL2RenderingContext, 1024));
-    expect(slices).toEqual([1024, 1024, 1024, 928]);
+    // the buffer is made in a slice of its own
+    expect(slices).toEqual([1024, 1024, 1024, 1024, 928]);
     expect(used).toHaveLength(1);
     expect(used[0].count).toBe(1000);
     expect(gl.contents(used[0].buffer)).toEqual(bytesOf(first));
@@ -48,6 +49,7 @@ describe('GpuArray', () => {
     // the next array goes to a buffer of its own: the first is drawn until it is all there
     const second = Uint32Array.from({ length: 600 }, (_, i) => 7 * i);
     gpu.set(second);
+    gpu.upload(gl as unknown as WebGL2RenderingContext, 1024);
     gpu.upload(gl as unknown as WebGL2RenderingContext, 1024);
     expect(used).toHaveLength(1);
     expect(gl.contents(used[0].buffer)).toEqual(bytesOf(first));
@@ -65,7 +67,7 @@ describe('GpuArray', () => {
     const gpu = new GpuArray(true, (attribute) => used.push(attribute));
     const array = new Uint32Array(1000);
     gpu.set(array);
-    gpu.upload(gl as unknown as WebGL2RenderingContext, 1 << 20);
+    while (!gpu.current) gpu.upload(gl as unknown as WebGL2RenderingContext, 1 << 20);
     array.fill(9, 100, 110);
     gpu.rewrote(100, 10);
     expect(gpu.current).toBe(false);
@@ -105,7 +107,8 @@ describe('GpuArray', () => {
           } else if (s.kind === 'upload') {
             const before = gl.sent;
             const used = gpu.upload(gl as unknown as WebGL2RenderingContext, s.bytes);
-            expect(gl.sent - before).toBe(used);
+            // a slice sends no more than it counts, and counts no more than it may
+            expect(gl.sent - before).toBeLessThanOrEqual(used);
             expect(used).toBeLessThanOrEqual(s.bytes);
           }
         }
