@@ -965,6 +965,8 @@ export class App {
     status.classList.toggle('error', role === 'alert');
     status.textContent = message;
     if (action) status.append(' ', el('button', { type: 'button', class: 'link status-action', onclick: action.run }, action.label));
+    // a longer line (a refusal, in presentation type) may reach over the mesh the app framed
+    this.frameAgainIfCovered();
   }
 
   // -----------------------------------------------------------------------------------------------
