@@ -1,7 +1,7 @@
 import { readFileSync } from 'node:fs';
 import { expect, type Page, test } from '@playwright/test';
 import { cube, mergeSoups, torus, writeSoup } from '../src/index.js';
-import { clickCanvas, openApp, stats } from './helpers.js';
+import { clickCanvas, openApp, openAppAt, stats } from './helpers.js';
 
 
 type Box = { left: number; top: number; right: number; bottom: number };
@@ -242,6 +242,17 @@ test.describe('stepping operations, history and export', () => {
     await expect(explode).toHaveAttribute('aria-pressed', 'true');
     expect(await lab(() => window.halfedgeLab.state().exploded)).toBe(true);
     await expect(page.locator('#status')).toContainText('the mesh itself has not moved');
+    // a link carries it: another page opens on the cut torus pulled apart, each corner where it is drawn here
+    const link = await lab(() => window.halfedgeLab.shareLink());
+    expect(link).toContain('&explode=on');
+    const second = await page.context().newPage();
+    await second.setViewportSize({ width: 1280, height: 720 });
+    await openAppAt(second, link);
+    await expect.poll(() => second.evaluate(() => window.halfedgeLab.state().exploded)).toBe(true);
+    const here = await drawnAt(page, corners);
+    const there = await drawnAt(second, corners);
+    for (let i = 0; i < corners.length; i++) expect(distance(here[i]!, there[i]!)).toBeLessThan(2);
+    await second.close();
     // the copies of each corner now stand well apart on screen…
     const { height } = (await page.locator('#viewport canvas').boundingBox())!;
     for (const gap of gaps(await drawnAt(page, corners), twins)) expect(gap).toBeGreaterThan(0.05 * height);

@@ -735,6 +735,7 @@ export class App {
       naming: this.inspection.convention,
       camera: { position: camera.position.toArray(), target: this.viewer.controls.target.toArray(), zoom: camera.zoom, shift: this.viewer.targetShift },
       mode: this.viewer.mode,
+      exploded: this.exploded,
     };
   }
 
@@ -746,6 +747,8 @@ export class App {
       this.byId('top-view').setAttribute('aria-pressed', String(state.mode === 'top'));
       this.frameMesh();
     }
+    // before the camera: turning it on frames the parts pulled apart
+    if (state.exploded) this.setExploded(true);
     if (state.camera) this.viewer.setCamera(state.camera.position, state.camera.target, state.camera.zoom, state.camera.shift);
     if (state.selection && this.mesh) {
       if (!exists(this.mesh, state.selection)) {
@@ -965,8 +968,9 @@ export class App {
     status.classList.toggle('error', role === 'alert');
     status.textContent = message;
     if (action) status.append(' ', el('button', { type: 'button', class: 'link status-action', onclick: action.run }, action.label));
-    // a longer line (a refusal, in presentation type) may reach over the mesh the app framed
-    this.frameAgainIfCovered();
+    // a refusal (three lines of presentation type) may reach over the mesh the app framed; other
+    // lines stay where they are (a copied link would otherwise move the view it describes)
+    if (role === 'alert') this.frameAgainIfCovered();
   }
 
   // -----------------------------------------------------------------------------------------------

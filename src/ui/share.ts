@@ -2,7 +2,7 @@
  * A link that restores what a lecturer shows: the sample model, the operations and edits that led
  * from it to the mesh on screen (replayed on opening), the selection with the walk that led to it
  * (the breadcrumb), and the camera, written to be read:
- * `?model=torus.off&ops=cut(plane:0/0/1/0,keep:above);flip-edge(edge:3)&select=h17&walk=next,twin&naming=target&camera=…&mode=top`.
+ * `?model=torus.off&ops=cut(plane:0/0/1/0,keep:above);flip-edge(edge:3)&select=h17&walk=next,twin&naming=target&camera=…&mode=top&explode=on`.
  * Links written before, whose steps were JSON, still open. Uploaded files never leave the
  * browser, so a link can only name a sample model.
  */
@@ -29,6 +29,8 @@ export interface ViewState {
    */
   camera: { position: number[]; target: number[]; zoom: number; shift: [number, number] } | null;
   mode: 'perspective' | 'top' | null;
+  /** The exploded view (the parts drawn pulled apart: a cut that kept both sides, a model of several). */
+  exploded: boolean;
 }
 
 export function encodeViewState(state: ViewState): string {
@@ -43,6 +45,7 @@ export function encodeViewState(state: ViewState): string {
     params.push(['camera', numbers.join(',')]);
   }
   if (state.mode) params.push(['mode', state.mode]);
+  if (state.exploded) params.push(['explode', 'on']);
   // the separators the steps and the camera use mean nothing else in a query: left as they are, so the link reads
   return params.map(([key, value]) => `${key}=${encodeURIComponent(value).replace(/%(2C|3A|3B|2F)/g, (escape) => decodeURIComponent(escape))}`).join('&');
 }
@@ -115,6 +118,7 @@ export function decodeViewState(query: string): ViewState {
     naming: naming === 'origin' || naming === 'target' ? naming : null,
     camera,
     mode: mode === 'top' || mode === 'perspective' ? mode : null,
+    exploded: params.get('explode') === 'on',
   };
 }
 

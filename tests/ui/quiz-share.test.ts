@@ -77,8 +77,12 @@ describe('share links', () => {
       naming: 'target' as const,
       camera: { position: [1, 2.5, -3], target: [0, 0, 0.25], zoom: 1.5, shift: [0.125, -0.0625] as [number, number] },
       mode: 'top' as const,
+      exploded: true,
     };
     expect(decodeViewState(encodeViewState(state))).toEqual(state);
+    expect(encodeViewState(state)).toMatch(/&explode=on$/);
+    expect(decodeViewState(encodeViewState({ ...state, exploded: false }))).toEqual({ ...state, exploded: false });
+    expect(decodeViewState('model=torus.off&explode=yes').exploded).toBe(false);
   });
 
   it('are written to be read: steps as calls with their settings, the walk as its moves, nothing percent-encoded', () => {
@@ -90,7 +94,7 @@ describe('share links', () => {
       { kind: 'edit' as const, request: { kind: 'split-edge' as const, edge: 12, triangulate: true } },
       { kind: 'edit' as const, request: { kind: 'triangulate-mesh' as const } },
     ];
-    const state = { model: 'torus.off', steps, selection: { kind: 'halfedge' as const, id: 4 }, walk: ['next' as const, 'twin.next' as const], naming: null, camera: { position: [1, 2, 3], target: [0, 0, 0], zoom: 1, shift: [0, 0] as [number, number] }, mode: null };
+    const state = { model: 'torus.off', steps, selection: { kind: 'halfedge' as const, id: 4 }, walk: ['next' as const, 'twin.next' as const], naming: null, camera: { position: [1, 2, 3], target: [0, 0, 0], zoom: 1, shift: [0, 0] as [number, number] }, mode: null, exploded: false };
     const query = encodeViewState(state);
     expect(query).toBe(
       'model=torus.off&ops=subdivide(scheme:loop,level:0);cut(plane:0/0.5/1/-0.25,keep:both,cap:false);smooth(method:taubin,iterations:3,lambda:0.5,mu:-0.53);' +
@@ -115,7 +119,7 @@ describe('share links', () => {
   });
 
   it('drop what is malformed instead of trusting it', () => {
-    expect(decodeViewState('model=cube.off&ops=[{"kind":"eval"}]&select=x9&naming=tail&camera=1,2,nan&mode=sideways')).toEqual({
+    expect(decodeViewState('model=cube.off&ops=[{"kind":"eval"}]&select=x9&naming=tail&camera=1,2,nan&mode=sideways&explode=1')).toEqual({
       model: 'cube.off',
       steps: [],
       selection: null,
@@ -123,6 +127,7 @@ describe('share links', () => {
       naming: null,
       camera: null,
       mode: null,
+      exploded: false,
     });
   });
 });
