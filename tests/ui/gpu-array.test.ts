@@ -1,7 +1,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { GLBufferAttribute } from 'three';
-import { GpuArray } from '../../src/ui/scene/gpu-array.js';
+import { GpuArray, SLICE_BYTES, SliceSize } from '../../src/ui/scene/gpu-array.js';
 
 /** The part of WebGL 2 an upload uses, keeping each buffer's bytes, and the bytes each call sent. */
 function recordingGl() {
@@ -123,5 +123,20 @@ describe('GpuArray', () => {
       }),
       { seed: 41, numRuns: 200 },
     );
+  });
+
+  it('slices by how long the last slice took: half after a slow one, down to the least; twice after a quick one, up to the most', () => {
+    const size = new SliceSize();
+    expect(size.bytes).toBe(SLICE_BYTES.most);
+    size.took(60);
+    expect(size.bytes).toBe(SLICE_BYTES.most / 2);
+    for (let i = 0; i < 10; i++) size.took(60);
+    expect(size.bytes).toBe(SLICE_BYTES.least);
+    size.took(10);
+    expect(size.bytes).toBe(SLICE_BYTES.least);
+    size.took(2);
+    expect(size.bytes).toBe(2 * SLICE_BYTES.least);
+    for (let i = 0; i < 10; i++) size.took(2);
+    expect(size.bytes).toBe(SLICE_BYTES.most);
   });
 });

@@ -3,7 +3,7 @@
  * rather than by three.js whole. Three.js uploads a new array in the frame that first draws it,
  * and a subdivision step of a million-triangle mesh arrives as arrays of a hundred megabytes and
  * more: half a second of one task on a software renderer, the page frozen meanwhile. Here a new
- * array goes up SLICE_BYTES at a time, the last one's buffer still drawn until it is all there;
+ * array goes up a slice at a time (see SliceSize), the last one's buffer still drawn until it is all there;
  * ranges the page rewrote in place (a patch) go up the same way.
  *
  *   set(array)          a new array: a new buffer, filled slice by slice
@@ -13,8 +13,24 @@
  */
 import { GLBufferAttribute } from 'three';
 
-/** Bytes put on the GPU per animation frame: about 5 ms of the page's time once the GPU has taken the last slice (32 MB took twice as long and saved no time in all). */
-export const SLICE_BYTES = 16 << 20;
+/**
+ * Bytes put on the GPU per animation frame, as `SliceSize` adjusts them: 16 MB took about 5 ms of
+ * the page's time while the GPU's process kept up, and up to 63 ms while it shared the two cores
+ * with a worker's full checks (32 MB saved no time in all).
+ */
+export const SLICE_BYTES = { least: 2 << 20, most: 16 << 20 };
+/** A slice that keeps the page's thread longer than this makes the next one half as large; one under a quarter of it, twice. */
+const SLICE_MS = 20;
+
+/** The size of the next slice, from how long the last one took. */
+export class SliceSize {
+  bytes = SLICE_BYTES.most;
+
+  took(ms: number): void {
+    if (ms > SLICE_MS) this.bytes = Math.max(SLICE_BYTES.least, this.bytes / 2);
+    else if (ms < SLICE_MS / 4) this.bytes = Math.min(SLICE_BYTES.most, this.bytes * 2);
+  }
+}
 
 type GpuTypedArray = Float32Array | Uint32Array;
 

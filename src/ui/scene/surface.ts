@@ -26,7 +26,7 @@ import {
 } from 'three';
 import { type Remote, transfer, wrap } from 'comlink';
 import type { RenderBounds, RenderBuffers, RenderPatch } from '../../workers/protocol.js';
-import { GpuArray, SLICE_BYTES } from './gpu-array.js';
+import { GpuArray, SliceSize } from './gpu-array.js';
 import { colors } from '../colors.js';
 import type { ColourScale } from '../../workers/colour-scale.js';
 import type { PickingApi, PickingWrite } from './picking.worker.js';
@@ -59,6 +59,8 @@ export class SurfaceLayer {
   private wanted = { edges: true, dots: false };
   /** Called once the surface is all on the GPU (see `onGpu`). */
   private readonly waitingForGpu: Array<() => void> = [];
+  /** How much of an array goes to the GPU per frame. */
+  private readonly slice = new SliceSize();
   /** Signalled once the GPU has taken the last slice sent (see `lastSliceTaken`). */
   private sliceSent: WebGLSync | null = null;
   /** The box and the sphere around what is drawn, for framing and culling (see `boundMoved`); every geometry has the one sphere. */
@@ -149,8 +151,10 @@ export class SurfaceLayer {
     if (drawn.some((array) => !array.current) && this.lastSliceTaken(gl)) {
       // three.js's vertex array objects keep their element buffers: bind none of them here
       renderer.resetState();
-      let bytes = SLICE_BYTES;
+      const start = performance.now();
+      let bytes = this.slice.bytes;
       for (const array of drawn) if (bytes > 0) bytes -= array.upload(gl, bytes);
+      this.slice.took(performance.now() - start);
       this.sliceSent = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
       gl.flush();
     }
