@@ -34,3 +34,24 @@ export function zeros<T extends Float64Array | Int32Array>(Type: new (length: nu
   array.fill(0);
   return array;
 }
+
+/**
+ * The sum of the first `count` bytes (a mesh's deleted flags: how many are set). Four bytes at a
+ * time where the array lines up: a subdivided mesh of millions of elements arrives whole on the
+ * page, which recounts its flags before it draws (21 ms at 5.2M faces a byte at a time).
+ */
+export function byteSum(bytes: Uint8Array, count: number): number {
+  let sum = 0;
+  let i = 0;
+  for (; i < count && (bytes.byteOffset + i) % 4 !== 0; i++) sum += bytes[i];
+  // none when the bytes ran out before a word began
+  const words = i < count ? new Uint32Array(bytes.buffer, bytes.byteOffset + i, (count - i) >> 2) : new Uint32Array(0);
+  for (let w = 0; w < words.length; ) {
+    // two bytes of each word into each of two 16-bit lanes: 128 words fill neither past 65,280
+    let lanes = 0;
+    for (const end = Math.min(words.length, w + 128); w < end; w++) lanes += (words[w] & 0x00ff00ff) + ((words[w] >>> 8) & 0x00ff00ff);
+    sum += (lanes & 0xffff) + (lanes >>> 16);
+  }
+  for (i += 4 * words.length; i < count; i++) sum += bytes[i];
+  return sum;
+}

@@ -36,7 +36,7 @@
 import { AttributeSet } from './attributes.js';
 import { InvalidInputError, TopologyError } from './errors.js';
 import { attributeSetOf, type ElementKind, elementKinds, lengthsByKind, meshArrays, roomByKind, setMeshArray, slotCount } from './mesh-arrays.js';
-import { type Memory, newArrayLike } from './memory.js';
+import { byteSum, type Memory, newArrayLike } from './memory.js';
 import { clearedFlags, permuteItems, Scratch } from './permute.js';
 
 export interface MeshCapacity {
@@ -361,14 +361,9 @@ export class HalfedgeMesh {
 
   /** Recounts the deleted slots from the flags (after the arrays were replaced wholesale). */
   recountDeleted(): void {
-    const count = (flags: Uint8Array, slots: number) => {
-      let n = 0;
-      for (let i = 0; i < slots; i++) n += flags[i];
-      return n;
-    };
-    this.deletedVertices = count(this.vDeleted, this.vertexSlots);
-    this.deletedEdges = count(this.eDeleted, this.edgeSlots);
-    this.deletedFaces = count(this.fDeleted, this.faceSlots);
+    this.deletedVertices = byteSum(this.vDeleted, this.vertexSlots);
+    this.deletedEdges = byteSum(this.eDeleted, this.edgeSlots);
+    this.deletedFaces = byteSum(this.fDeleted, this.faceSlots);
   }
 
   /**
