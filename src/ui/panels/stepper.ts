@@ -33,8 +33,12 @@ export function steppingTitle(snapshot: Snapshot): string | null {
   return `${stepping.label} — phase ${stepping.phases}${of}${snapshot.ended ? ' (done)' : ''}: ${phase?.name ?? ''}`;
 }
 
-/** Rows of the pointer diff shown (the count says how many there were). */
-const MAX_DIFF_ROWS = 300;
+/**
+ * Rows of the pointer diff shown (the count says how many there were): more than a lecture reads
+ * in its scroll box, and few enough to lay out with the phase (300 took 33 ms of the task that
+ * shows a subdivision phase).
+ */
+const MAX_DIFF_ROWS = 100;
 
 export class StepperPanel {
   private readonly title = el('p', { class: 'phase-title', 'aria-live': 'polite' });
