@@ -57,8 +57,6 @@ export class SurfaceLayer {
   private render: RenderBuffers | null = null;
   /** Whether the edge lines and the vertex dots are to show (each does once its array is on the GPU: see `uploadSlice`). */
   private wanted = { edges: true, dots: false };
-  /** Called once the surface is all on the GPU (see `onGpu`). */
-  private readonly waitingForGpu: Array<() => void> = [];
   /** How much of an array goes to the GPU per frame. */
   private readonly slice = new SliceSize();
   /** Signalled once the GPU has taken the last slice sent (see `lastSliceTaken`). */
@@ -116,16 +114,13 @@ export class SurfaceLayer {
         if (buffer !== 'triangleFace') this.gpu[buffer].rewrote(offset, data.length); // triangleFace is read here, never uploaded
       }
       this.boundMoved(patch);
-      // after the mesh it patches, which may still wait for the GPU
-      if (this.workerReady) this.workerReady = this.workerReady.then(() => this.patchPickingWorker(patch));
+      if (this.workerReady) this.workerReady = this.patchPickingWorker(patch);
     } else {
       for (const name of ['positions', 'triangles', 'edges', 'vertices'] as const) this.gpu[name].set(render[name]);
       this.pickFaces.setAttribute('position', new BufferAttribute(render.positions, 3));
       this.pickFaces.setIndex(new BufferAttribute(render.triangles, 1));
       this.triangleFace = render.triangleFace;
-      // once the surface is drawn: building the hierarchy takes a core the GPU's process needs meanwhile
-      const picking = render.picking;
-      this.workerReady = picking ? this.onGpu().then(() => this.sendToPickingWorker(picking)) : null;
+      this.workerReady = render.picking ? this.sendToPickingWorker(render.picking) : null;
       this.bound(render.bounds);
       this.edgeLength = medianEdgeLength(render.positions, render.edges, counts.edges);
     }
@@ -160,14 +155,7 @@ export class SurfaceLayer {
     }
     this.edges.visible = this.wanted.edges && positions.current && edges.current;
     this.dots.visible = this.wanted.dots && positions.current && vertices.current;
-    const onGpu = positions.current && triangles.current;
-    if (onGpu) for (const resolve of this.waitingForGpu.splice(0)) resolve();
-    return !onGpu;
-  }
-
-  /** Resolves once the surface is all on the GPU. */
-  private onGpu(): Promise<void> {
-    return new Promise((resolve) => this.waitingForGpu.push(resolve));
+    return !(positions.current && triangles.current);
   }
 
   /**
