@@ -140,8 +140,6 @@ export class App {
   private marked: { snapshot: Snapshot; marks: HighlightSpec } | null = null;
   /** What the phase layer draws, or is about to (see `drawPhaseMarks`). */
   private phaseMarksDrawn: { marks: HighlightSpec | null; mesh: HalfedgeMesh; scale: number } | null = null;
-  /** The phase layer's marks are yet to be laid out: the view waits for them. */
-  private marksPending = false;
   /** The boundary loops last listed, and the snapshot they are of (see `boundaryLoops`). */
   private loops: { snapshot: Snapshot; loops: BoundaryLoop[] } | null = null;
   private readonly gizmo: PlaneGizmo;
@@ -198,7 +196,7 @@ export class App {
     this.viewer.controls.addEventListener('end', () => this.detail.refreshIfPartial());
     this.viewer.beforeDraw = () => this.detail.fit();
     // the surface's arrays a slice per frame; the view draws once they and the phase's marks are all there
-    this.viewer.beforeFrame = () => this.surface.uploadSlice(this.viewer.renderer) || this.marksPending;
+    this.viewer.beforeFrame = () => this.surface.uploadSlice(this.viewer.renderer) || this.phaseLayer.laying;
     // labels and framed meshes keep off the overlays on the view
     this.viewer.overlays = () =>
       ['legend', 'hud', 'status', 'values-legend', 'arrow-note'].flatMap((id) => {
@@ -1004,7 +1002,7 @@ export class App {
    * The marks of the phase on show, drawn again only when they, the mesh drawn or the scale
    * change. A phase marks thousands of elements: they are laid out in tasks of their own after
    * the one that shows the snapshot (each then well within the 100 ms a page may keep its input
-   * waiting), and the view draws the snapshot once they are all there (see `marksPending`).
+   * waiting), and the view draws the snapshot once they are all there (`HighlightLayer.laying`).
    */
   private drawPhaseMarks(mesh: HalfedgeMesh): void {
     const marks = this.phaseMarks();
@@ -1012,18 +1010,8 @@ export class App {
     const last = this.phaseMarksDrawn;
     if (last && last.marks === marks && last.mesh === mesh && last.scale === this.scale) return;
     this.phaseMarksDrawn = drawing;
-    if (!marks) {
-      this.phaseLayer.clear();
-      this.marksPending = false;
-      return;
-    }
-    this.marksPending = true;
-    void this.phaseLayer.showInTasks(mesh, marks, this.scale).then((done) => {
-      // overtaken: the later call clears the flag
-      if (!done) return;
-      this.marksPending = false;
-      this.viewer.requestRender();
-    });
+    if (marks) void this.phaseLayer.showInTasks(mesh, marks, this.scale).then((done) => done && this.viewer.requestRender());
+    else this.phaseLayer.clear();
   }
 
   private drawSelection(): void {

@@ -52,6 +52,8 @@ export class HighlightLayer {
   private readonly dotTexture = roundDot();
   /** Counts the calls of `clear` (every show begins with one), so a show in tasks knows when it was overtaken. */
   private shown = 0;
+  /** A show in tasks has parts yet to lay out (the view waits for them). */
+  laying = false;
 
   /**
    * `opacity` < 1 for the hover preview; `widthScale` makes the highlighted arrows stand out;
@@ -93,11 +95,13 @@ export class HighlightLayer {
   async showInTasks(mesh: HalfedgeMesh, spec: HighlightSpec, scale: number): Promise<boolean> {
     this.clear();
     const shown = this.shown;
+    this.laying = true;
     for (const part of this.parts(mesh, spec, scale)) {
       await new Promise((resolve) => setTimeout(resolve));
       if (this.shown !== shown) return false;
       part();
     }
+    this.laying = false;
     return true;
   }
 
@@ -224,6 +228,7 @@ export class HighlightLayer {
 
   clear(): void {
     this.shown++;
+    this.laying = false;
     for (const child of [...this.group.children]) {
       if (child instanceof CSS2DObject) child.element.remove();
       if ('geometry' in child && child.geometry instanceof BufferGeometry && child.geometry !== shape) child.geometry.dispose();
