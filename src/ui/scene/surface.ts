@@ -161,7 +161,7 @@ export class SurfaceLayer {
   /**
    * Whether the GPU has taken the last slice sent. A slice sent before would wait for it on the
    * page's thread: the renderer's process shares two cores with the workers, and fell behind by
-   * hundreds of milliseconds while a worker built its picking hierarchy.
+   * hundreds of milliseconds while they worked (a picking hierarchy built, a full check).
    */
   private lastSliceTaken(gl: WebGL2RenderingContext): boolean {
     if (!this.sliceSent) return true;
